@@ -1,0 +1,153 @@
+// curvature-inpaint: the command-line front end of the pipeline.
+#include "mesh_io.h"
+#include "pipeline.h"
+
+#include <vcg_ext/punch_hole.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace {
+
+const char* const kUsage =
+    "usage:\n"
+    "  curvature-inpaint coarse IN OUT [--max-hole-edges N] [--selected-only]\n"
+    "      Fill every hole of IN (stages 0-2: Liepa triangulation, refinement, fairing) and\n"
+    "      write OUT. Formats: .ply .off .obj .stl. N = 0 (default) fills holes of any size.\n"
+    "  curvature-inpaint info IN\n"
+    "      Print the vertex, face and hole counts of IN (boundary edges of each hole).\n"
+    "  curvature-inpaint punch IN OUT --seed-vertex V --radius-frac R\n"
+    "      Remove every face with a vertex within R x (bounding-box diagonal) of vertex V:\n"
+    "      the hole cases of the benchmark.\n";
+
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class Args {
+public:
+  Args(int argc, char** argv) : args_(argv + 1, argv + argc) {}
+  std::string Command() {
+    if (args_.empty()) throw UsageError("no command given");
+    std::string c = args_.front();
+    args_.erase(args_.begin());
+    return c;
+  }
+  bool Flag(const std::string& name) {
+    for (size_t i = 0; i < args_.size(); ++i)
+      if (args_[i] == name) {
+        args_.erase(args_.begin() + i);
+        return true;
+      }
+    return false;
+  }
+  std::string Option(const std::string& name, const std::string& fallback) {
+    for (size_t i = 0; i < args_.size(); ++i)
+      if (args_[i] == name) {
+        if (i + 1 >= args_.size()) throw UsageError(name + " needs a value");
+        std::string v = args_[i + 1];
+        args_.erase(args_.begin() + i, args_.begin() + i + 2);
+        return v;
+      }
+    return fallback;
+  }
+  long Integer(const std::string& name, long fallback, long lo) {
+    const std::string v = Option(name, "");
+    if (v.empty()) return fallback;
+    char* end = nullptr;
+    const long x = std::strtol(v.c_str(), &end, 10);
+    if (*end != '\0' || x < lo) throw UsageError(name + " needs an integer >= " + std::to_string(lo));
+    return x;
+  }
+  double Real(const std::string& name) {
+    const std::string v = Option(name, "");
+    char* end = nullptr;
+    const double x = std::strtod(v.c_str(), &end);
+    if (v.empty() || *end != '\0' || !(x > 0)) throw UsageError(name + " needs a positive number");
+    return x;
+  }
+  std::vector<std::string> Positional(size_t count) {
+    for (const auto& a : args_)
+      if (a.size() > 1 && a[0] == '-') throw UsageError("unknown option " + a);
+    if (args_.size() != count)
+      throw UsageError("expected " + std::to_string(count) + " file arguments");
+    return args_;
+  }
+
+private:
+  std::vector<std::string> args_;
+};
+
+bool ProgressToStderr(const int, const char* message) {
+  std::fprintf(stderr, "%s\n", message);
+  return true;
+}
+
+int Coarse(Args& args) {
+  vcg_ext::CoarseFillParams params;
+  params.max_hole_edges = int(args.Integer("--max-hole-edges", 0, 0));
+  params.selected_only = args.Flag("--selected-only");
+  const auto files = args.Positional(2);
+  CMeshO m;
+  const int mask = curvature_inpaint::LoadMesh(files[0], m);
+  const auto result = curvature_inpaint::CoarseFill(m, params, ProgressToStderr);
+  for (const auto& line : curvature_inpaint::DescribeCoarseFill(result))
+    std::fprintf(stderr, "%s\n", line.c_str());
+  curvature_inpaint::SaveMesh(files[1], m, mask);
+  return 0;
+}
+
+int Info(Args& args) {
+  const auto files = args.Positional(1);
+  CMeshO m;
+  curvature_inpaint::LoadMesh(files[0], m);
+  const auto c = curvature_inpaint::CountHoles(m);
+  std::printf("vertices %d\nfaces %d\nnon_manifold_edges %zu\nholes %zu\n", c.vertices, c.faces,
+              c.non_manifold_edges, c.loop_edges.size());
+  std::printf("hole_edges");
+  for (int e : c.loop_edges) std::printf(" %d", e);
+  std::printf("\n");
+  return 0;
+}
+
+int Punch(Args& args) {
+  const long seed = args.Integer("--seed-vertex", -1, 0);
+  if (seed < 0) throw UsageError("--seed-vertex is required");
+  const double frac = args.Real("--radius-frac");
+  const auto files = args.Positional(2);
+  CMeshO m;
+  const int mask = curvature_inpaint::LoadMesh(files[0], m);
+  if (seed >= long(m.vert.size()))
+    throw UsageError("--seed-vertex " + std::to_string(seed) + " is not a vertex of " + files[0]);
+  const auto center = m.vert[seed].cP();
+  const int removed = vcg_ext::PunchHole(m, center, Scalarm(frac * m.bbox.Diag()));
+  std::fprintf(stderr, "removed %d faces\n", removed);
+  curvature_inpaint::SaveMesh(files[1], m, mask);
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  Args args(argc, argv);
+  try {
+    const std::string command = args.Command();
+    if (command == "coarse") return Coarse(args);
+    if (command == "info") return Info(args);
+    if (command == "punch") return Punch(args);
+    if (command == "-h" || command == "--help" || command == "help") {
+      std::printf("%s", kUsage);
+      return 0;
+    }
+    throw UsageError("unknown command \"" + command + "\"");
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "curvature-inpaint: %s\n%s", e.what(), kUsage);
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "curvature-inpaint: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,25 @@
+// Reading and writing meshes outside MeshLab (PLY, OFF, OBJ, STL through vcglib), for the
+// command-line tool. MeshLab's own I/O plugins do this inside the GUI and meshlabserver.
+#pragma once
+
+#include <common/ml_mesh_type.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace curvature_inpaint {
+
+class MeshIoError : public std::runtime_error {
+public:
+  explicit MeshIoError(const std::string& what) : std::runtime_error(what) {}
+};
+
+/// Loads `path` into `m` (cleared first) and returns vcglib's mask of what the file holds,
+/// so SaveMesh can write the same attributes back. Throws MeshIoError.
+int LoadMesh(const std::string& path, CMeshO& m);
+
+/// Writes `m` to `path` with the attributes in `mask`. The file appears complete or not at
+/// all: it is written beside the target and renamed over it. Throws MeshIoError.
+void SaveMesh(const std::string& path, CMeshO& m, int mask);
+
+} // namespace curvature_inpaint

@@ -1,0 +1,60 @@
+#include "pipeline.h"
+
+#include <vcg/complex/algorithms/update/bounding.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <functional>
+
+namespace curvature_inpaint {
+
+vcg_ext::CoarseFillResult CoarseFill(CMeshO& m, const vcg_ext::CoarseFillParams& params,
+                                     vcg::CallBackPos* cb) {
+  vcg_ext::CoarseFillResult result = vcg_ext::CoarseFill(m, params, cb);
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+  return result;
+}
+
+std::vector<std::string> DescribeCoarseFill(const vcg_ext::CoarseFillResult& result) {
+  std::vector<std::string> lines;
+  char buf[512];
+  int new_vertices = 0, new_faces = 0;
+  for (size_t h = 0; h < result.holes.size(); ++h) {
+    const auto& r = result.holes[h];
+    new_vertices += int(r.new_vertices.size());
+    new_faces += int(r.new_faces.size());
+    if (r.filled) {
+      std::snprintf(buf, sizeof buf, "hole %zu: %d edges%s, %s, %zu new vertices, %zu faces, %s, %.1f ms%s%s",
+                    h + 1, r.boundary_edges, r.pinched ? " (pinched)" : "", r.triangulation.c_str(),
+                    r.new_vertices.size(), r.new_faces.size(), r.faired ? "faired" : "not faired",
+                    1000 * r.seconds, r.problem.empty() ? "" : ": ", r.problem.c_str());
+    } else {
+      std::snprintf(buf, sizeof buf, "hole %zu: %d edges%s, left open: %s", h + 1, r.boundary_edges,
+                    r.pinched ? " (pinched)" : "", r.problem.c_str());
+    }
+    lines.emplace_back(buf);
+  }
+  std::snprintf(buf, sizeof buf,
+                "filled %d of %zu holes with %d vertices and %d faces; left open: %d over the "
+                "size limit, %d away from the selection",
+                result.FilledCount(), result.holes.size(), new_vertices, new_faces,
+                result.skipped_by_size, result.skipped_by_selection);
+  lines.emplace_back(buf);
+  return lines;
+}
+
+HoleCensus CountHoles(const CMeshO& m) {
+  HoleCensus census;
+  census.vertices = m.vn;
+  census.faces = m.fn;
+  const vcg_ext::EdgeCensus edges = vcg_ext::CensusEdges(m);
+  census.non_manifold_edges = edges.non_manifold_edges + edges.inconsistent_edges;
+  if (census.non_manifold_edges == 0) {
+    const vcg_ext::HoleLoops loops = vcg_ext::FindHoleLoops(m, edges);
+    for (const auto& l : loops.holes) census.loop_edges.push_back(l.EdgeCount());
+  }
+  std::sort(census.loop_edges.begin(), census.loop_edges.end(), std::greater<int>());
+  return census;
+}
+
+} // namespace curvature_inpaint

@@ -1,0 +1,31 @@
+// The pipeline both front ends call: the MeshLab plugin and the curvature-inpaint tool.
+// Stages live in vcg_ext/; this layer binds them to MeshLab's mesh type and turns their
+// results into the log lines users read.
+#pragma once
+
+#include <common/ml_mesh_type.h>
+#include <vcg_ext/coarse_fill.h>
+
+#include <string>
+#include <vector>
+
+namespace curvature_inpaint {
+
+/// Stages 0-2 on a MeshLab mesh: fills its holes and updates its bounding box.
+/// Throws vcg_ext::InvalidMeshError or vcg_ext::CancelledError with `m` untouched.
+vcg_ext::CoarseFillResult CoarseFill(CMeshO& m, const vcg_ext::CoarseFillParams& params,
+                                     vcg::CallBackPos* cb = nullptr);
+
+/// One line per hole, then a summary line.
+std::vector<std::string> DescribeCoarseFill(const vcg_ext::CoarseFillResult& result);
+
+/// Boundary loops of a mesh, by size: for reports and for tests of watertightness.
+struct HoleCensus {
+  int vertices = 0;
+  int faces = 0;
+  std::vector<int> loop_edges; ///< boundary edges of each loop, largest first
+  size_t non_manifold_edges = 0;
+};
+HoleCensus CountHoles(const CMeshO& m);
+
+} // namespace curvature_inpaint

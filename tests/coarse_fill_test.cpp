@@ -1,0 +1,224 @@
+#include "test_mesh.h"
+
+#include <vcg_ext/coarse_fill.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using test::Mesh;
+
+namespace {
+
+const vcg::Point3f kDirections[] = {{1, 0.2f, 0.1f}, {-0.3f, 1, 0.2f}, {0.1f, -0.2f, -1}, {-1, -1, 1}};
+
+double MaxRadiusError(const Mesh& m, const vcg_ext::CoarseFillResult& r, float radius) {
+  double worst = 0;
+  for (const auto& h : r.holes)
+    for (int v : h.new_vertices)
+      worst = std::max(worst, std::abs(double(m.vert[v].cP().Norm()) - radius) / radius);
+  return worst;
+}
+
+TEST(CoarseFill, SphereHolesComeBackWatertightAndOnTheSphere) {
+  Mesh m;
+  const float radius = 2.0f;
+  test::MakeSphere(m, radius);
+  for (const auto& d : kDirections) ASSERT_GT(test::PunchSphere(m, d, radius, 30), 0);
+  ASSERT_EQ(test::Inspect(m).loops, 4u);
+
+  const auto result = vcg_ext::CoarseFill(m);
+
+  ASSERT_EQ(result.holes.size(), 4u);
+  EXPECT_EQ(result.FilledCount(), 4);
+  const auto topo = test::Inspect(m);
+  EXPECT_EQ(topo.boundary_edges, 0u);
+  EXPECT_EQ(topo.non_manifold_edges, 0u);
+  for (const auto& h : result.holes) {
+    EXPECT_EQ(h.triangulation, "liepa-dp");
+    EXPECT_TRUE(h.faired);
+    EXPECT_GT(h.new_vertices.size(), 5u) << "refinement should match the sphere's density";
+  }
+  EXPECT_LT(MaxRadiusError(m, result, radius), 0.01);
+}
+
+TEST(CoarseFill, VcgEarsCloseLoopsBeyondTheDynamicProgramme) {
+  Mesh m;
+  const float radius = 1.0f;
+  test::MakeSphere(m, radius);
+  for (const auto& d : kDirections) test::PunchSphere(m, d, radius, 30);
+  vcg_ext::CoarseFillParams params;
+  params.dp_max_edges = 8; // every loop here is longer
+
+  const auto result = vcg_ext::CoarseFill(m, params);
+
+  EXPECT_EQ(result.FilledCount(), 4);
+  for (const auto& h : result.holes) EXPECT_EQ(h.triangulation, "vcg-ears");
+  const auto topo = test::Inspect(m);
+  EXPECT_EQ(topo.boundary_edges, 0u);
+  EXPECT_EQ(topo.non_manifold_edges, 0u);
+  EXPECT_LT(MaxRadiusError(m, result, radius), 0.01);
+}
+
+TEST(CoarseFill, FlatHoleStaysFlat) {
+  Mesh m;
+  test::MakePlane(m, 40, 1.0f);
+  vcg_ext::PunchHole(m, vcg::Point3f(0.5f, 0.5f, 0), 0.2f);
+  vcg_ext::CoarseFillParams params;
+  params.max_hole_edges = 100; // the plane's outer border is not a hole to fill
+  const auto result = vcg_ext::CoarseFill(m, params);
+
+  ASSERT_EQ(result.FilledCount(), 1);
+  EXPECT_EQ(result.skipped_by_size, 1);
+  EXPECT_GT(result.holes[0].new_vertices.size(), 20u);
+  for (int v : result.holes[0].new_vertices) EXPECT_NEAR(m.vert[v].cP()[2], 0.0, 1e-6);
+  EXPECT_EQ(test::Inspect(m).loops, 1u); // only the outer border
+  EXPECT_EQ(test::Inspect(m).non_manifold_edges, 0u);
+}
+
+TEST(CoarseFill, PinchedHoleIsSplitAndFilled) {
+  Mesh m;
+  const int n = 10;
+  test::MakePlane(m, n, 1.0f);
+  // Two square holes touching at one corner vertex: one boundary walk through a pinch vertex.
+  auto remove_cell = [&](int i, int j) {
+    vcg::tri::Allocator<Mesh>::DeleteFace(m, m.face[2 * (i * n + j)]);
+    vcg::tri::Allocator<Mesh>::DeleteFace(m, m.face[2 * (i * n + j) + 1]);
+  };
+  remove_cell(4, 4);
+  remove_cell(4, 5);
+  remove_cell(5, 6);
+  remove_cell(6, 6);
+  vcg::tri::Allocator<Mesh>::CompactEveryVector(m);
+  vcg_ext::CoarseFillParams params;
+  params.max_hole_edges = 30;
+
+  const auto result = vcg_ext::CoarseFill(m, params);
+
+  ASSERT_EQ(result.holes.size(), 2u);
+  for (const auto& h : result.holes) EXPECT_TRUE(h.pinched);
+  EXPECT_EQ(result.FilledCount(), 2);
+  const auto topo = test::Inspect(m);
+  EXPECT_EQ(topo.non_manifold_edges, 0u);
+  EXPECT_EQ(topo.loops, 1u); // only the outer border
+}
+
+TEST(CoarseFill, HolesOverTheSizeLimitStayOpen) {
+  Mesh m;
+  test::MakeSphere(m, 1.0f);
+  test::PunchSphere(m, kDirections[0], 1.0f, 50);
+  test::PunchSphere(m, kDirections[2], 1.0f, 20);
+  const auto before = vcg_ext::FindHoleLoops(m, vcg_ext::CensusEdges(m)).holes;
+  ASSERT_EQ(before.size(), 2u);
+  const int small = std::min(before[0].EdgeCount(), before[1].EdgeCount());
+  const int large = std::max(before[0].EdgeCount(), before[1].EdgeCount());
+  ASSERT_LT(small, large);
+  vcg_ext::CoarseFillParams params;
+  params.max_hole_edges = small;
+
+  const auto result = vcg_ext::CoarseFill(m, params);
+
+  EXPECT_EQ(result.FilledCount(), 1);
+  EXPECT_EQ(result.skipped_by_size, 1);
+  const auto after = vcg_ext::FindHoleLoops(m, vcg_ext::CensusEdges(m)).holes;
+  ASSERT_EQ(after.size(), 1u);
+  EXPECT_EQ(after[0].EdgeCount(), large);
+}
+
+TEST(CoarseFill, OnlyHolesTouchingTheSelection) {
+  Mesh m;
+  test::MakeSphere(m, 1.0f);
+  test::PunchSphere(m, kDirections[0], 1.0f, 30);
+  test::PunchSphere(m, kDirections[1], 1.0f, 30);
+  const auto loops = vcg_ext::FindHoleLoops(m, vcg_ext::CensusEdges(m)).holes;
+  ASSERT_EQ(loops.size(), 2u);
+  m.face[loops[1].faces[0]].SetS();
+  vcg_ext::CoarseFillParams params;
+  params.selected_only = true;
+
+  const auto result = vcg_ext::CoarseFill(m, params);
+
+  EXPECT_EQ(result.FilledCount(), 1);
+  EXPECT_EQ(result.skipped_by_selection, 1);
+  EXPECT_EQ(result.holes[0].loop, loops[1].vertices);
+  // Afterwards exactly the new faces are selected.
+  size_t selected = 0;
+  for (const auto& f : m.face) selected += f.IsS();
+  EXPECT_EQ(selected, result.holes[0].new_faces.size());
+}
+
+TEST(CoarseFill, ClosedMeshComesBackUnchanged) {
+  Mesh m, original;
+  test::MakeSphere(m, 1.5f);
+  vcg::tri::Append<Mesh, Mesh>::MeshCopy(original, m);
+
+  const auto result = vcg_ext::CoarseFill(m);
+
+  EXPECT_TRUE(result.holes.empty());
+  ASSERT_EQ(m.vert.size(), original.vert.size());
+  ASSERT_EQ(m.face.size(), original.face.size());
+  for (size_t i = 0; i < m.vert.size(); ++i) EXPECT_EQ(m.vert[i].cP(), original.vert[i].cP());
+  for (size_t i = 0; i < m.face.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      EXPECT_EQ(vcg::tri::Index(m, m.face[i].cV(k)), vcg::tri::Index(original, original.face[i].cV(k)));
+}
+
+TEST(CoarseFill, ExistingVerticesAndAttributesAreKept) {
+  Mesh m;
+  test::MakeSphere(m, 1.0f);
+  test::PunchSphere(m, kDirections[0], 1.0f, 30);
+  for (auto& v : m.vert) v.C() = vcg::Color4b(200, 40, 10, 255), v.Q() = 7.0f;
+  Mesh original;
+  vcg::tri::Append<Mesh, Mesh>::MeshCopy(original, m);
+
+  const auto result = vcg_ext::CoarseFill(m);
+
+  ASSERT_EQ(result.FilledCount(), 1);
+  for (size_t i = 0; i < original.vert.size(); ++i) {
+    EXPECT_EQ(m.vert[i].cP(), original.vert[i].cP());
+    EXPECT_EQ(m.vert[i].cC(), original.vert[i].cC());
+  }
+  for (int v : result.holes[0].new_vertices) {
+    EXPECT_EQ(m.vert[v].cC(), vcg::Color4b(200, 40, 10, 255));
+    EXPECT_FLOAT_EQ(m.vert[v].cQ(), 7.0f);
+  }
+}
+
+TEST(CoarseFill, RejectsAnEmptyMesh) {
+  Mesh m;
+  EXPECT_THROW(vcg_ext::CoarseFill(m), vcg_ext::InvalidMeshError);
+}
+
+TEST(CoarseFill, RejectsNonFiniteCoordinatesAndChangesNothing) {
+  Mesh m;
+  test::MakeSphere(m, 1.0f);
+  test::PunchSphere(m, kDirections[0], 1.0f, 30);
+  m.vert[3].P()[1] = std::numeric_limits<float>::quiet_NaN();
+  const size_t vn = m.vert.size(), fn = m.face.size();
+  try {
+    vcg_ext::CoarseFill(m);
+    FAIL() << "a NaN coordinate was accepted";
+  } catch (const vcg_ext::InvalidMeshError& e) {
+    EXPECT_NE(std::string(e.what()).find("non-finite"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(m.vert.size(), vn);
+  EXPECT_EQ(m.face.size(), fn);
+}
+
+TEST(CoarseFill, RejectsNonManifoldEdges) {
+  Mesh m;
+  test::MakePlane(m, 4, 1.0f);
+  // A third face on the edge between vertices 6 and 7.
+  auto vi = vcg::tri::Allocator<Mesh>::AddVertices(m, 1);
+  vi->P() = vcg::Point3f(0.3f, 0.3f, 1.0f);
+  vcg::tri::Allocator<Mesh>::AddFace(m, &m.vert[6], &m.vert[7], &*vi);
+  try {
+    vcg_ext::CoarseFill(m);
+    FAIL() << "a non-manifold edge was accepted";
+  } catch (const vcg_ext::InvalidMeshError& e) {
+    EXPECT_NE(std::string(e.what()).find("more than two faces"), std::string::npos) << e.what();
+  }
+}
+
+} // namespace

@@ -1,0 +1,316 @@
+// Stages 0-2: the coarse fill. Finds the holes of a mesh and closes each with a triangulation
+// refined to the surrounding density and faired (Liepa 2003), in the mesh's own coordinates.
+//
+// Every hole is computed on a detached patch first and written to the mesh only when all of
+// them are done, so an exception (invalid input, cancellation) leaves the mesh untouched.
+#pragma once
+
+#include "hole_fairing.h"
+#include "hole_loops.h"
+#include "hole_refinement.h"
+#include "hole_triangulation.h"
+#include "mesh_checks.h"
+#include "unit_box.h"
+
+#include <vcg/complex/algorithms/update/selection.h>
+#include <wrap/callback.h>
+
+#include <chrono>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace vcg_ext {
+
+struct CoarseFillParams {
+  int max_hole_edges = 0;         ///< holes with more boundary edges stay open; 0 = fill all
+  bool selected_only = false;     ///< fill only holes with a selected face on their border
+  int dp_max_edges = 200;         ///< larger loops use vcglib's ears instead of Liepa's O(n^3) DP
+  bool refine = true;             ///< match the surrounding edge density
+  double density_alpha = 1.41421356; ///< Liepa's alpha: larger gives a denser fill
+  bool fair = true;               ///< bi-Laplacian fairing of the inserted vertices
+  bool select_new_faces = true;   ///< replace the face selection with the new faces
+};
+
+struct HoleFillReport {
+  int boundary_edges = 0;
+  bool pinched = false;      ///< the loop was split at a non-manifold vertex
+  bool filled = false;
+  std::string triangulation; ///< "liepa-dp" or "vcg-ears"
+  bool faired = false;
+  std::string problem;       ///< why the hole stayed open or was not faired; empty if none
+  double seconds = 0;
+  std::vector<int> loop;         ///< the loop's vertex indices in the mesh
+  std::vector<int> new_vertices; ///< indices in m.vert of the vertices added for this hole
+  std::vector<int> new_faces;    ///< indices in m.face of the faces added for this hole
+};
+
+struct CoarseFillResult {
+  std::vector<HoleFillReport> holes; ///< every hole considered, filled or not
+  int skipped_by_size = 0;
+  int skipped_by_selection = 0;
+  UnitBox box;
+  int FilledCount() const {
+    int c = 0;
+    for (const auto& h : holes) c += h.filled;
+    return c;
+  }
+};
+
+namespace detail {
+
+/// Collects, for every hole, the mesh faces around its loop in local indices (one pass over
+/// the faces for all holes together).
+template <class MeshType>
+std::vector<HoleCollar> BuildCollars(const MeshType& m, const std::vector<HoleLoop>& holes,
+                                     const UnitBox& box) {
+  std::unordered_map<int, std::vector<std::pair<int, int>>> on_loop; // vertex -> (hole, local)
+  for (int h = 0; h < int(holes.size()); ++h)
+    for (int i = 0; i < holes[h].EdgeCount(); ++i) on_loop[holes[h].vertices[i]].push_back({h, i});
+
+  std::vector<std::vector<int>> faces(holes.size());
+  for (int f = 0; f < int(m.face.size()); ++f) {
+    if (m.face[f].IsD()) continue;
+    for (int k = 0; k < 3; ++k) {
+      auto it = on_loop.find(int(vcg::tri::Index(m, m.face[f].cV(k))));
+      if (it == on_loop.end()) continue;
+      for (const auto& hl : it->second)
+        if (faces[hl.first].empty() || faces[hl.first].back() != f) faces[hl.first].push_back(f);
+    }
+  }
+
+  std::vector<HoleCollar> collars(holes.size());
+  for (int h = 0; h < int(holes.size()); ++h) {
+    const HoleLoop& loop = holes[h];
+    const int n = loop.EdgeCount();
+    HoleCollar& c = collars[h];
+    std::unordered_map<int, int> local; // mesh vertex -> collar index (>= 0 loop, < 0 outer)
+    for (int i = 0; i < n; ++i) local[loop.vertices[i]] = i;
+    std::vector<Eigen::Vector3d> loop_points(n);
+    for (int i = 0; i < n; ++i) loop_points[i] = box.ToUnit(m.vert[loop.vertices[i]].cP());
+    c.edge_scale.assign(n, 0.0);
+    std::vector<int> edge_count(n, 0);
+    for (int f : faces[h]) {
+      std::array<int, 3> t;
+      for (int k = 0; k < 3; ++k) {
+        const int v = int(vcg::tri::Index(m, m.face[f].cV(k)));
+        auto it = local.find(v);
+        if (it == local.end()) {
+          c.outer_points.push_back(box.ToUnit(m.vert[v].cP()));
+          it = local.emplace(v, -int(c.outer_points.size())).first;
+        }
+        t[k] = it->second;
+      }
+      if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue; // degenerate face
+      c.triangles.push_back(t);
+      auto point = [&](int i) { return i >= 0 ? loop_points[i] : c.outer_points[-i - 1]; };
+      for (int k = 0; k < 3; ++k) {
+        const int a = t[k], b = t[(k + 1) % 3];
+        const double len = (point(a) - point(b)).norm();
+        for (int e : {a, b})
+          if (e >= 0) c.edge_scale[e] += len, ++edge_count[e];
+      }
+    }
+    for (int i = 0; i < n; ++i)
+      if (edge_count[i] > 0) c.edge_scale[i] /= edge_count[i];
+    c.side_normals.resize(n);
+    for (int i = 0; i < n; ++i) {
+      const auto& f = m.face[loop.faces[i]];
+      c.side_normals[i] = TriangleNormal(box.ToUnit(f.cV(0)->cP()), box.ToUnit(f.cV(1)->cP()),
+                                         box.ToUnit(f.cV(2)->cP()))
+                              .normalized();
+      if (!c.side_normals[i].allFinite()) c.side_normals[i].setZero();
+    }
+  }
+  return collars;
+}
+
+/// Builds one hole's patch: triangulation, refinement, fairing.
+inline HolePatch FillOneHole(const std::vector<Eigen::Vector3d>& loop_points,
+                             const HoleCollar& collar, const CoarseFillParams& params,
+                             HoleFillReport& report) {
+  const int n = int(loop_points.size());
+  HolePatch patch;
+  patch.boundary_count = n;
+  patch.points = loop_points;
+  auto point = [&](int i) { return i >= 0 ? loop_points[i] : collar.outer_points[-i - 1]; };
+  std::vector<Eigen::Vector3d> vertex_normals(n, Eigen::Vector3d::Zero());
+  for (const auto& t : collar.triangles) {
+    const Eigen::Vector3d nt = TriangleNormal(point(t[0]), point(t[1]), point(t[2]));
+    for (int k = 0; k < 3; ++k) {
+      if (t[k] >= 0) vertex_normals[t[k]] += nt;
+      const int a = t[k], b = t[(k + 1) % 3];
+      if (a >= 0 && b >= 0 && !patch.IsBoundaryEdge(a, b))
+        patch.forbidden_edges.insert(MakeLocalEdge(a, b));
+    }
+  }
+  for (auto& vn : vertex_normals)
+    if (vn.norm() > 0) vn.normalize();
+
+  HoleTriangulationParams tp;
+  tp.dp_max_edges = params.dp_max_edges;
+  HoleTriangulation tri =
+      TriangulateHole(loop_points, collar.side_normals, vertex_normals, patch.forbidden_edges, tp);
+  report.triangulation = tri.method;
+  if (!tri.complete) {
+    report.problem = "no valid triangulation of the loop was found";
+    return patch;
+  }
+  patch.triangles = tri.triangles;
+  if (params.refine) {
+    HoleRefinementParams rp;
+    rp.alpha = params.density_alpha;
+    RefineHolePatch(patch, collar.edge_scale, rp);
+  } else {
+    detail::RelaxPatch(patch, HoleRefinementParams().max_flip_rounds);
+  }
+  for (const auto& t : patch.triangles)
+    for (int k = 0; k < 3; ++k)
+      if (patch.forbidden_edges.count(MakeLocalEdge(t[k], t[(k + 1) % 3]))) {
+        report.problem = "every triangulation would duplicate an edge of the mesh";
+        patch.triangles.clear();
+        return patch;
+      }
+  report.filled = true;
+  if (params.fair && patch.NewVertexCount() > 0) {
+    report.faired = FairHolePatch(patch, collar);
+    if (!report.faired) report.problem = "fairing failed on a degenerate neighbourhood; kept flat";
+  }
+  return patch;
+}
+
+template <class MeshType>
+void ApplyPatches(MeshType& m, const std::vector<HoleLoop>& loops,
+                  const std::vector<HolePatch>& patches, const UnitBox& box,
+                  const CoarseFillParams& params, std::vector<HoleFillReport>& reports) {
+  using VertexType = typename MeshType::VertexType;
+  using ScalarType = typename MeshType::ScalarType;
+  size_t nv = 0, nf = 0;
+  for (size_t h = 0; h < patches.size(); ++h)
+    if (reports[h].filled) nv += patches[h].NewVertexCount(), nf += patches[h].triangles.size();
+  if (params.select_new_faces) vcg::tri::UpdateSelection<MeshType>::FaceClear(m);
+  if (nf == 0) return;
+
+  const size_t v_base = m.vert.size();
+  const size_t f_base = m.face.size();
+  vcg::tri::Allocator<MeshType>::AddVertices(m, nv);
+  vcg::tri::Allocator<MeshType>::AddFaces(m, nf);
+  size_t vnext = v_base, fnext = f_base;
+  for (size_t h = 0; h < patches.size(); ++h) {
+    if (!reports[h].filled) continue;
+    const HolePatch& patch = patches[h];
+    const HoleLoop& loop = loops[h];
+    std::vector<int> global(patch.points.size());
+    for (int i = 0; i < patch.boundary_count; ++i) global[i] = loop.vertices[i];
+    for (int i = patch.boundary_count; i < int(patch.points.size()); ++i) {
+      const int g = int(vnext++);
+      global[i] = g;
+      reports[h].new_vertices.push_back(g);
+      VertexType& v = m.vert[g];
+      v.P() = box.FromUnit<ScalarType>(patch.points[i]);
+      // Interpolate colour and quality from the triangle the vertex was inserted into.
+      const auto& par = patch.parents[i - patch.boundary_count];
+      if (vcg::tri::HasPerVertexColor(m)) {
+        int sum[4] = {0, 0, 0, 0};
+        for (int p : par)
+          for (int c = 0; c < 4; ++c) sum[c] += m.vert[global[p]].C()[c];
+        for (int c = 0; c < 4; ++c) v.C()[c] = (unsigned char)((sum[c] + 1) / 3);
+      }
+      if (vcg::tri::HasPerVertexQuality(m)) {
+        double q = 0;
+        for (int p : par) q += m.vert[global[p]].Q();
+        v.Q() = typename VertexType::QualityType(q / 3);
+      }
+      if (vcg::tri::HasPerVertexNormal(m)) v.N().SetZero();
+    }
+    const auto& side = m.face[loop.faces[0]];
+    for (const auto& t : patch.triangles) {
+      const int g = int(fnext++);
+      reports[h].new_faces.push_back(g);
+      auto& f = m.face[g];
+      for (int k = 0; k < 3; ++k) f.V(k) = &m.vert[global[t[k]]];
+      if (vcg::tri::HasPerFaceColor(m)) f.C() = side.cC();
+      if (vcg::tri::HasPerFaceQuality(m)) f.Q() = side.cQ();
+      const auto area_normal = vcg::TriangleNormal(f);
+      if (vcg::tri::HasPerFaceNormal(m)) f.N() = vcg::Point3<ScalarType>(area_normal).Normalize();
+      if (vcg::tri::HasPerVertexNormal(m))
+        for (int k = 0; k < 3; ++k)
+          if (global[t[k]] >= int(v_base)) f.V(k)->N() += area_normal;
+      if (params.select_new_faces) f.SetS();
+    }
+  }
+  if (vcg::tri::HasPerVertexNormal(m))
+    for (size_t g = v_base; g < m.vert.size(); ++g) m.vert[g].N().Normalize();
+}
+
+} // namespace detail
+
+/// Fills the holes of `m` (stages 0-2 of the pipeline).
+///
+/// Preconditions, checked before anything is written (InvalidMeshError otherwise): at least
+/// one face, finite coordinates, every edge shared by at most two consistently oriented faces.
+/// Loops are split at pinch vertices. Holes that cannot be closed without a non-manifold edge
+/// stay open and say why in their report. Existing vertices and faces keep their positions and
+/// attributes; new vertices interpolate colour and quality. `cb` receives progress; returning
+/// false cancels (CancelledError) with the mesh untouched.
+template <class MeshType>
+CoarseFillResult CoarseFill(MeshType& m, const CoarseFillParams& params = {},
+                            vcg::CallBackPos* cb = nullptr) {
+  const EdgeCensus census = ValidateForHoleFilling(m);
+  HoleLoopParams lp;
+  lp.max_edges = params.max_hole_edges;
+  lp.selected_only = params.selected_only;
+  const HoleLoops loops = FindHoleLoops(m, census, lp);
+
+  CoarseFillResult result;
+  result.skipped_by_size = loops.skipped_by_size;
+  result.skipped_by_selection = loops.skipped_by_selection;
+  result.box = ComputeUnitBox(m);
+  const std::vector<HoleCollar> collars = detail::BuildCollars(m, loops.holes, result.box);
+
+  const int count = int(loops.holes.size());
+  result.holes.resize(count);
+  std::vector<HolePatch> patches(count);
+  std::set<std::pair<int, int>> chords; // mesh-index chords added by the fills so far
+  for (int h = 0; h < count; ++h) {
+    const auto start = std::chrono::steady_clock::now();
+    const HoleLoop& loop = loops.holes[h];
+    HoleFillReport& report = result.holes[h];
+    report.boundary_edges = loop.EdgeCount();
+    report.pinched = loop.pinched;
+    report.loop = loop.vertices;
+    std::vector<Eigen::Vector3d> points(loop.EdgeCount());
+    for (int i = 0; i < loop.EdgeCount(); ++i)
+      points[i] = result.box.ToUnit(m.vert[loop.vertices[i]].cP());
+    patches[h] = detail::FillOneHole(points, collars[h], params, report);
+    // Two loops meeting at pinch vertices could both add the same chord between them.
+    if (report.filled && loop.pinched) {
+      std::vector<std::pair<int, int>> mine;
+      for (const auto& t : patches[h].triangles)
+        for (int k = 0; k < 3; ++k) {
+          const int a = t[k], b = t[(k + 1) % 3];
+          if (a < loop.EdgeCount() && b < loop.EdgeCount() && !patches[h].IsBoundaryEdge(a, b))
+            mine.push_back(std::minmax(loop.vertices[a], loop.vertices[b]));
+        }
+      bool clash = false;
+      for (const auto& c : mine) clash = clash || chords.count(c) > 0;
+      if (clash) {
+        report.filled = false;
+        report.problem = "its fill would share an edge with the fill of a neighbouring hole";
+      } else {
+        chords.insert(mine.begin(), mine.end());
+      }
+    }
+    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (cb) {
+      const std::string msg = "Coarse fill: hole " + std::to_string(h + 1) + " of " +
+                              std::to_string(count) + " (" + std::to_string(loop.EdgeCount()) +
+                              " edges)";
+      if (!cb(int(100.0 * (h + 1) / std::max(count, 1)), msg.c_str())) throw CancelledError();
+    }
+  }
+  detail::ApplyPatches(m, loops.holes, patches, result.box, params, result.holes);
+  return result;
+}
+
+} // namespace vcg_ext
