@@ -104,6 +104,7 @@ bool FilterCurvatureInpaintPlugin::applyCoarseHoleFill(MeshModel& mm,
     for (const std::string& line : curvature_inpaint::DescribeCoarseFill(result)) Log(line);
   } catch (const std::exception& e) {
     errorMessage = QString("Coarse Hole Fill: ") + e.what() + ". The mesh was not changed.";
+    Log(GLLogStream::WARNING, errorMessage.toStdString()); // meshlabserver prints only the log
     return false;
   }
   mm.UpdateBoxAndNormals();

@@ -1,5 +1,6 @@
 #include "mesh_io.h"
 
+#include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/normal.h>
 #include <wrap/io_trimesh/export.h>
@@ -50,6 +51,12 @@ int LoadMesh(const std::string& path, CMeshO& m) {
     const std::string why = Importer::ErrorMsg(err);
     m.Clear();
     throw MeshIoError(path + ": not a readable mesh (" + why + ")");
+  }
+  if (ext == "stl") {
+    // STL stores each triangle with its own corners: weld them, as MeshLab does on import,
+    // or every triangle would be a hole of its own.
+    vcg::tri::Clean<CMeshO>::RemoveDuplicateVertex(m);
+    vcg::tri::Allocator<CMeshO>::CompactEveryVector(m);
   }
   if (!(loaded & Mask::IOM_VERTNORMAL)) vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
   else vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);

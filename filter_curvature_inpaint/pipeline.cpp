@@ -40,6 +40,13 @@ std::vector<std::string> DescribeCoarseFill(const vcg_ext::CoarseFillResult& res
                 result.FilledCount(), result.holes.size(), new_vertices, new_faces,
                 result.skipped_by_size, result.skipped_by_selection);
   lines.emplace_back(buf);
+  if (result.inconsistent_edges > 0) {
+    std::snprintf(buf, sizeof buf,
+                  "warning: %zu edges join faces of opposite orientation (left as they are; "
+                  "MeshLab's \"Re-Orient all faces coherently\" repairs them)",
+                  result.inconsistent_edges);
+    lines.emplace_back(buf);
+  }
   return lines;
 }
 
@@ -48,7 +55,8 @@ HoleCensus CountHoles(const CMeshO& m) {
   census.vertices = m.vn;
   census.faces = m.fn;
   const vcg_ext::EdgeCensus edges = vcg_ext::CensusEdges(m);
-  census.non_manifold_edges = edges.non_manifold_edges + edges.inconsistent_edges;
+  census.non_manifold_edges = edges.non_manifold_edges;
+  census.inconsistent_edges = edges.inconsistent_edges;
   if (census.non_manifold_edges == 0) {
     const vcg_ext::HoleLoops loops = vcg_ext::FindHoleLoops(m, edges);
     for (const auto& l : loops.holes) census.loop_edges.push_back(l.EdgeCount());

@@ -49,6 +49,7 @@ struct CoarseFillResult {
   std::vector<HoleFillReport> holes; ///< every hole considered, filled or not
   int skipped_by_size = 0;
   int skipped_by_selection = 0;
+  size_t inconsistent_edges = 0; ///< edges whose faces disagree on orientation (left as is)
   UnitBox box;
   int FilledCount() const {
     int c = 0;
@@ -119,6 +120,7 @@ std::vector<HoleCollar> BuildCollars(const MeshType& m, const std::vector<HoleLo
       c.side_normals[i] = TriangleNormal(box.ToUnit(f.cV(0)->cP()), box.ToUnit(f.cV(1)->cP()),
                                          box.ToUnit(f.cV(2)->cP()))
                               .normalized();
+      if (!loop.face_agrees[i]) c.side_normals[i] = -c.side_normals[i];
       if (!c.side_normals[i].allFinite()) c.side_normals[i].setZero();
     }
   }
@@ -248,7 +250,7 @@ void ApplyPatches(MeshType& m, const std::vector<HoleLoop>& loops,
 /// Fills the holes of `m` (stages 0-2 of the pipeline).
 ///
 /// Preconditions, checked before anything is written (InvalidMeshError otherwise): at least
-/// one face, finite coordinates, every edge shared by at most two consistently oriented faces.
+/// one face, finite coordinates, every edge shared by at most two faces.
 /// Loops are split at pinch vertices. Holes that cannot be closed without a non-manifold edge
 /// stay open and say why in their report. Existing vertices and faces keep their positions and
 /// attributes; new vertices interpolate colour and quality. `cb` receives progress; returning
@@ -265,6 +267,7 @@ CoarseFillResult CoarseFill(MeshType& m, const CoarseFillParams& params = {},
   CoarseFillResult result;
   result.skipped_by_size = loops.skipped_by_size;
   result.skipped_by_selection = loops.skipped_by_selection;
+  result.inconsistent_edges = census.inconsistent_edges;
   result.box = ComputeUnitBox(m);
   const std::vector<HoleCollar> collars = detail::BuildCollars(m, loops.holes, result.box);
 

@@ -7,6 +7,7 @@
 
 #include "edge_census.h"
 
+#include <algorithm>
 #include <unordered_map>
 #include <vector>
 
@@ -18,6 +19,9 @@ struct HoleLoop {
   std::vector<int> vertices;
   /// The face beside each boundary edge vertices[i] -> vertices[i+1].
   std::vector<int> faces;
+  /// Whether that face runs the edge as vertices[i] -> vertices[i+1]; false only where a face
+  /// is flipped against its neighbours.
+  std::vector<char> face_agrees;
   /// True when one of the loop's vertices also lies on another part of the boundary.
   bool pinched = false;
 
@@ -36,54 +40,62 @@ struct HoleLoops {
 };
 
 /// Splits the boundary half-edges of `census` into simple loops and selects those `params`
-/// asks for. Precondition: the census found no non-manifold or inconsistent edges.
+/// asks for. Precondition: the census found no non-manifold edges.
 template <class MeshType>
 HoleLoops FindHoleLoops(const MeshType& m, const EdgeCensus& census,
                         const HoleLoopParams& params = {}) {
-  // Outgoing boundary half-edges per vertex; a pinch vertex has more than one.
-  std::unordered_map<int, std::vector<int>> outgoing;
-  for (int i = 0; i < int(census.boundary.size()); ++i)
-    outgoing[census.boundary[i].from].push_back(i);
+  // Boundary edges around each vertex; a pinch vertex has more than two. The walk ignores
+  // the edges' directions: a face flipped against its neighbours (scans have a few) must not
+  // break its hole's loop.
+  const auto& boundary = census.boundary;
+  std::unordered_map<int, std::vector<int>> incident;
+  for (int i = 0; i < int(boundary.size()); ++i) {
+    incident[boundary[i].from].push_back(i);
+    incident[boundary[i].to].push_back(i);
+  }
 
-  std::vector<char> used(census.boundary.size(), 0);
-  std::vector<std::vector<int>> loops; // as lists of half-edge indices
-  for (int start = 0; start < int(census.boundary.size()); ++start) {
+  struct Step {
+    int edge; // index into census.boundary
+    int from; // the vertex the walk leaves along it
+  };
+  std::vector<char> used(boundary.size(), 0);
+  std::vector<std::vector<Step>> loops;
+  for (int start = 0; start < int(boundary.size()); ++start) {
     if (used[start]) continue;
-    // Walk until the start vertex is reached again. Every vertex has as many outgoing as
-    // incoming boundary half-edges, so the walk cannot get stuck.
-    std::vector<int> walk;
-    int e = start;
-    const int start_vertex = census.boundary[start].from;
+    // Walk until the start vertex is reached again. Every vertex has an even number of
+    // boundary edges, so the walk cannot get stuck on a valid census.
+    std::vector<Step> walk;
+    const int start_vertex = boundary[start].from;
+    int e = start, v = start_vertex;
     for (;;) {
       used[e] = 1;
-      walk.push_back(e);
-      const int v = census.boundary[e].to;
+      walk.push_back({e, v});
+      v = boundary[e].from == v ? boundary[e].to : boundary[e].from;
       if (v == start_vertex) break;
       int next = -1;
-      for (int cand : outgoing[v])
+      for (int cand : incident[v])
         if (!used[cand]) {
           next = cand;
           break;
         }
-      if (next < 0) break; // cannot happen on a valid census; keep what was walked
+      if (next < 0) break;
       e = next;
     }
-    if (census.boundary[walk.back()].to != start_vertex) continue;
+    if (v != start_vertex) continue; // an open chain: not a hole
     // Split at repeated vertices: whenever the walk returns to a vertex already on the
-    // stack, the half-edges since then form a simple loop of their own.
-    std::vector<int> stack;
-    std::unordered_map<int, int> position; // vertex -> index in stack of the edge leaving it
-    for (int he : walk) {
-      const int from = census.boundary[he].from;
-      auto it = position.find(from);
+    // stack, the steps since then form a simple loop of their own.
+    std::vector<Step> stack;
+    std::unordered_map<int, int> position; // vertex -> index in stack of the step leaving it
+    for (const Step& step : walk) {
+      auto it = position.find(step.from);
       if (it != position.end()) {
         const int at = it->second;
         loops.emplace_back(stack.begin() + at, stack.end());
-        for (size_t k = at; k < stack.size(); ++k) position.erase(census.boundary[stack[k]].from);
+        for (size_t k = at; k < stack.size(); ++k) position.erase(stack[k].from);
         stack.resize(at);
       }
-      position[from] = int(stack.size());
-      stack.push_back(he);
+      position[step.from] = int(stack.size());
+      stack.push_back(step);
     }
     if (!stack.empty()) loops.push_back(stack);
   }
@@ -92,12 +104,22 @@ HoleLoops FindHoleLoops(const MeshType& m, const EdgeCensus& census,
   for (const auto& loop : loops) {
     HoleLoop hole;
     bool selected = false;
-    for (int he : loop) {
-      const HalfEdge& h = census.boundary[he];
-      hole.vertices.push_back(h.from);
+    int agreeing = 0;
+    for (const Step& step : loop) {
+      const HalfEdge& h = boundary[step.edge];
+      hole.vertices.push_back(step.from);
       hole.faces.push_back(h.face);
-      hole.pinched = hole.pinched || outgoing[h.from].size() > 1;
+      hole.face_agrees.push_back(h.from == step.from);
+      agreeing += h.from == step.from;
+      hole.pinched = hole.pinched || incident[step.from].size() > 2;
       selected = selected || m.face[h.face].IsS();
+    }
+    if (2 * agreeing < hole.EdgeCount()) { // run the loop the way most faces beside it do
+      const int n = hole.EdgeCount();
+      std::reverse(hole.vertices.begin() + 1, hole.vertices.end());
+      std::reverse(hole.faces.begin(), hole.faces.end());
+      std::reverse(hole.face_agrees.begin(), hole.face_agrees.end());
+      for (int i = 0; i < n; ++i) hole.face_agrees[i] = !hole.face_agrees[i];
     }
     if (params.max_edges > 0 && hole.EdgeCount() > params.max_edges) {
       ++result.skipped_by_size;

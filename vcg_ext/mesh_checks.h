@@ -9,9 +9,16 @@
 
 namespace vcg_ext {
 
+namespace detail {
+inline std::string Counted(size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+} // namespace detail
+
 /// Throws InvalidMeshError, naming the problem and what to run first, unless `m` has faces,
-/// finite coordinates, and edges shared by at most two consistently oriented faces.
-/// Returns the census so callers do not compute it twice.
+/// finite coordinates, and edges shared by at most two faces. Edges whose two faces disagree
+/// on orientation are allowed (scans often have a few, far from any hole); the census counts
+/// them. Returns the census so callers do not compute it twice.
 template <class MeshType>
 EdgeCensus ValidateForHoleFilling(const MeshType& m) {
   if (m.fn == 0 || m.vn == 0)
@@ -26,18 +33,14 @@ EdgeCensus ValidateForHoleFilling(const MeshType& m) {
       }
   }
   if (non_finite > 0)
-    throw InvalidMeshError(std::to_string(non_finite) +
-                           " vertices have non-finite coordinates (NaN or infinity); remove "
-                           "them before filling holes");
+    throw InvalidMeshError(detail::Counted(non_finite, "vertex has", "vertices have") +
+                           " non-finite coordinates (NaN or infinity); remove them before "
+                           "filling holes");
   EdgeCensus census = CensusEdges(m);
   if (census.non_manifold_edges > 0)
-    throw InvalidMeshError(std::to_string(census.non_manifold_edges) +
-                           " edges are shared by more than two faces; run MeshLab's "
-                           "\"Repair non Manifold Edges\" first");
-  if (census.inconsistent_edges > 0)
-    throw InvalidMeshError(std::to_string(census.inconsistent_edges) +
-                           " edges join faces of opposite orientation; run MeshLab's "
-                           "\"Re-Orient all faces coherently\" first");
+    throw InvalidMeshError(detail::Counted(census.non_manifold_edges, "edge is", "edges are") +
+                           " shared by more than two faces; run MeshLab's \"Repair non "
+                           "Manifold Edges\" first");
   return census;
 }
 

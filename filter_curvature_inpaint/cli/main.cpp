@@ -105,8 +105,8 @@ int Info(Args& args) {
   CMeshO m;
   curvature_inpaint::LoadMesh(files[0], m);
   const auto c = curvature_inpaint::CountHoles(m);
-  std::printf("vertices %d\nfaces %d\nnon_manifold_edges %zu\nholes %zu\n", c.vertices, c.faces,
-              c.non_manifold_edges, c.loop_edges.size());
+  std::printf("vertices %d\nfaces %d\nnon_manifold_edges %zu\ninconsistent_edges %zu\nholes %zu\n",
+              c.vertices, c.faces, c.non_manifold_edges, c.inconsistent_edges, c.loop_edges.size());
   std::printf("hole_edges");
   for (int e : c.loop_edges) std::printf(" %d", e);
   std::printf("\n");

@@ -1,0 +1,120 @@
+"""The command-line tool on real scans and on bad input."""
+import math
+import os
+import unittest
+
+from support import SHARED_MESHES, TOOL, TempDirTest, grid, info, run, sha256, write_ascii_ply
+
+
+class CoarseFill(TempDirTest):
+    def test_punched_scan_comes_back_watertight(self):
+        src = self.punched("igea_190k.ply", 21537, 0.05)
+        before = info(src)
+        self.assertEqual(before["holes"], 1)
+        out = self.path("filled.ply")
+        r = run([TOOL, "coarse", src, out])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("hole 1:", r.stderr)  # a progress line per hole
+        after = info(out)
+        self.assertEqual(after["holes"], 0)
+        self.assertEqual(after["non_manifold_edges"], 0)
+        self.assertGreater(after["vertices"], before["vertices"])
+
+    def test_pinched_falcon_bottom_is_closed(self):
+        out = self.path("falcon.ply")
+        r = run([TOOL, "coarse", os.path.join(SHARED_MESHES, "falconstatue_boundary.ply"), out])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("(pinched)", r.stderr)
+        self.assertEqual(info(out)["holes"], 0)
+
+    def test_windows_over_the_size_limit_stay_open(self):
+        src = os.path.join(SHARED_MESHES, "tower_holes.ply")
+        sizes = info(src)["hole_edges"]
+        limit = 30
+        out = self.path("tower.ply")
+        r = run([TOOL, "coarse", src, out, "--max-hole-edges", str(limit)])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(sorted(info(out)["hole_edges"]), sorted(e for e in sizes if e > limit))
+
+    def test_every_format_round_trips(self):
+        v, f = grid(12)
+        f = [t for k, t in enumerate(f) if k not in (60, 61, 62, 63)]  # a small hole
+        src = self.path("grid.ply")
+        write_ascii_ply(src, v, f)
+        for ext in ("ply", "off", "obj", "stl"):
+            out = self.path("out." + ext)
+            r = run([TOOL, "coarse", src, out, "--max-hole-edges", "20"])
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(info(out)["holes"], 1, ext)  # only the outer border is left
+
+
+class BadInput(TempDirTest):
+    def assert_refused(self, src, expected_words):
+        digest = sha256(src)
+        out = self.path("out.ply")
+        r = run([TOOL, "coarse", src, out])
+        self.assertNotEqual(r.returncode, 0)
+        lines = r.stderr.strip().splitlines()
+        self.assertEqual(len(lines), 1, r.stderr)  # one clear line
+        self.assertTrue(lines[0].startswith("curvature-inpaint: "), lines[0])
+        for w in expected_words:
+            self.assertIn(w, lines[0])
+        self.assertEqual(sha256(src), digest)  # input untouched
+        self.assertFalse(os.path.exists(out))  # nothing half-written
+        self.assertEqual([n for n in os.listdir(self.tmp) if ".part" in n], [])
+
+    def test_not_a_mesh(self):
+        src = self.path("notes.ply")
+        with open(src, "w") as f:
+            f.write("these are my notes, not a mesh\n")
+        self.assert_refused(src, ["not a readable mesh"])
+
+    def test_truncated_file(self):
+        src = self.path("truncated.ply")
+        with open(os.path.join(SHARED_MESHES, "fandisk.ply"), "rb") as f:
+            data = f.read()
+        with open(src, "wb") as f:
+            f.write(data[: len(data) // 2])
+        self.assert_refused(src, ["not a readable mesh"])
+
+    def test_empty_mesh(self):
+        src = self.path("empty.ply")
+        write_ascii_ply(src, [], [])
+        self.assert_refused(src, ["empty"])
+
+    def test_nan_coordinates(self):
+        v, f = grid(4)
+        v[7] = (math.nan, 0.5, 0.0)
+        src = self.path("nan.ply")
+        write_ascii_ply(src, v, f)
+        self.assert_refused(src, ["non-finite"])
+
+    def test_non_manifold_edge(self):
+        v, f = grid(4)
+        v.append((0.3, 0.3, 1.0))
+        f.append((6, 7, len(v) - 1))
+        src = self.path("nonmanifold.ply")
+        write_ascii_ply(src, v, f)
+        self.assert_refused(src, ["more than two faces"])
+
+    def test_missing_file_and_unknown_format(self):
+        r = run([TOOL, "coarse", self.path("absent.ply"), self.path("out.ply")])
+        self.assertNotEqual(r.returncode, 0)
+        self.assertIn("cannot open", r.stderr)
+        src = self.path("mesh.xyz")
+        with open(src, "w") as f:
+            f.write("0 0 0\n")
+        r = run([TOOL, "coarse", src, self.path("out.ply")])
+        self.assertNotEqual(r.returncode, 0)
+        self.assertIn("unsupported format", r.stderr)
+
+    def test_usage_errors(self):
+        r = run([TOOL, "coarse", "only-one-file.ply"])
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("usage:", r.stderr)
+        r = run([TOOL, "coarse", "a.ply", "b.ply", "--max-hole-edges", "-3"])
+        self.assertEqual(r.returncode, 2)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,50 @@
+"""The plugin inside Debian's real meshlabserver, driven by the filter scripts we ship."""
+import glob
+import os
+import unittest
+
+from support import SCRIPTS, TempDirTest, grid, info, make_meshlab_prefix, run, sha256, write_ascii_ply
+
+
+class MeshlabServer(TempDirTest):
+    def setUp(self):
+        super().setUp()
+        self.bin = make_meshlab_prefix(self.path("prefix"))
+
+    def meshlabserver(self, src, out, script):
+        return run(["xvfb-run", "-a", os.path.join(self.bin, "meshlabserver"),
+                    "-i", src, "-o", out, "-s", script])
+
+    def test_every_shipped_script_runs_and_fills(self):
+        scripts = sorted(glob.glob(os.path.join(SCRIPTS, "*.mlx")))
+        self.assertIn("curvature_inpaint_coarse_hole_fill.mlx", [os.path.basename(s) for s in scripts])
+        src = self.punched("nefertiti.ply", 33416, 0.03)
+        self.assertEqual(info(src)["holes"], 1)
+        for script in scripts:
+            with self.subTest(script=os.path.basename(script)):
+                out = self.path(os.path.basename(script) + ".ply")
+                r = self.meshlabserver(src, out, script)
+                self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+                self.assertIn("filled 1 of 1 holes", r.stdout + r.stderr)
+                after = info(out)
+                self.assertEqual(after["holes"], 0)
+                self.assertEqual(after["non_manifold_edges"], 0)
+
+    def test_refused_mesh_is_reported_and_not_written(self):
+        v, f = grid(4)
+        v.append((0.3, 0.3, 1.0))
+        f.append((6, 7, len(v) - 1))
+        src = self.path("nonmanifold.ply")
+        write_ascii_ply(src, v, f)
+        digest = sha256(src)
+        out = self.path("out.ply")
+        r = self.meshlabserver(src, out, os.path.join(SCRIPTS, "curvature_inpaint_coarse_hole_fill.mlx"))
+        self.assertNotEqual(r.returncode, 0)
+        self.assertIn("shared by more than two faces", r.stdout + r.stderr)
+        self.assertIn("The mesh was not changed", r.stdout + r.stderr)
+        self.assertFalse(os.path.exists(out))
+        self.assertEqual(sha256(src), digest)
+
+
+if __name__ == "__main__":
+    unittest.main()

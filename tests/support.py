@@ -1,0 +1,91 @@
+"""Helpers for the tests that drive the real programs: the command-line tool and meshlabserver."""
+import hashlib
+import os
+import shutil
+import subprocess
+import tempfile
+import unittest
+
+BUILD = os.environ["CI_BUILD_DIR"]
+SOURCE = os.environ["CI_SOURCE_DIR"]
+SHARED_MESHES = os.path.join(SOURCE, "..", "shared", "meshes")
+TOOL = os.path.join(BUILD, "bin", "curvature-inpaint")
+PLUGIN = os.path.join(BUILD, "plugins", "libfilter_curvature_inpaint.so")
+SCRIPTS = os.path.join(SOURCE, "filter_curvature_inpaint", "scripts")
+MESHLAB_LIB = "/usr/lib/x86_64-linux-gnu/meshlab"
+
+
+def run(args, timeout=300):
+    return subprocess.run(args, capture_output=True, text=True, timeout=timeout)
+
+
+def sha256(path):
+    with open(path, "rb") as f:
+        return hashlib.sha256(f.read()).hexdigest()
+
+
+def info(path):
+    """The tool's `info` report as a dict of ints (hole_edges as a list)."""
+    r = run([TOOL, "info", path])
+    if r.returncode != 0:
+        raise AssertionError(f"info {path} failed: {r.stderr}")
+    out = {}
+    for line in r.stdout.splitlines():
+        key, *values = line.split()
+        out[key] = [int(v) for v in values] if key == "hole_edges" else int(values[0])
+    return out
+
+
+def write_ascii_ply(path, vertices, faces):
+    with open(path, "w") as f:
+        f.write("ply\nformat ascii 1.0\n")
+        f.write(f"element vertex {len(vertices)}\nproperty float x\nproperty float y\nproperty float z\n")
+        f.write(f"element face {len(faces)}\nproperty list uchar int vertex_indices\nend_header\n")
+        for v in vertices:
+            f.write(" ".join(str(c) for c in v) + "\n")
+        for t in faces:
+            f.write("3 " + " ".join(str(i) for i in t) + "\n")
+
+
+def grid(n):
+    """A flat (n+1)^2 grid in z = 0 and its triangles."""
+    vertices = [(j / n, i / n, 0.0) for i in range(n + 1) for j in range(n + 1)]
+    faces = []
+    for i in range(n):
+        for j in range(n):
+            a, b, c, d = i * (n + 1) + j, i * (n + 1) + j + 1, (i + 1) * (n + 1) + j, (i + 1) * (n + 1) + j + 1
+            faces += [(a, b, d), (a, d, c)]
+    return vertices, faces
+
+
+def make_meshlab_prefix(root):
+    """A private MeshLab prefix whose meshlabserver loads the built plugin (no root needed)."""
+    lib = os.path.join(root, "lib", "x86_64-linux-gnu", "meshlab")
+    plugins = os.path.join(lib, "plugins")
+    os.makedirs(plugins)
+    os.makedirs(os.path.join(root, "bin"))
+    for exe in ("meshlabserver", "meshlab"):
+        shutil.copy(f"/usr/bin/{exe}", os.path.join(root, "bin", exe))
+    for name in os.listdir(MESHLAB_LIB):
+        if name.startswith("libmeshlab-common.so"):
+            os.symlink(os.path.join(MESHLAB_LIB, name), os.path.join(lib, name))
+    for name in os.listdir(os.path.join(MESHLAB_LIB, "plugins")):
+        os.symlink(os.path.join(MESHLAB_LIB, "plugins", name), os.path.join(plugins, name))
+    os.symlink(PLUGIN, os.path.join(plugins, os.path.basename(PLUGIN)))
+    return os.path.join(root, "bin")
+
+
+class TempDirTest(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.mkdtemp(prefix="ci-test-")
+        self.addCleanup(shutil.rmtree, self.tmp, ignore_errors=True)
+
+    def path(self, name):
+        return os.path.join(self.tmp, name)
+
+    def punched(self, mesh, seed, radius_frac, name="punched.ply"):
+        out = self.path(name)
+        r = run([TOOL, "punch", os.path.join(SHARED_MESHES, mesh), out,
+                 "--seed-vertex", str(seed), "--radius-frac", str(radius_frac)])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        return out
