@@ -39,16 +39,16 @@ SRC
   need_update=1
 fi
 
-if [ ${#missing[@]} -gt 0 ] || { [ ! -d "$src_dir/vcglib" ] && [ "$need_update" -eq 1 ]; }; then
-  need_update=1
-fi
 if [ "$need_update" -eq 1 ] || [ ${#missing[@]} -gt 0 ]; then
   echo "setup: apt-get update" >&2
   as_root apt-get update -qq
 fi
 if [ ${#missing[@]} -gt 0 ]; then
   echo "setup: installing ${missing[*]}" >&2
-  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  log=$(mktemp)
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+    "${missing[@]}" >"$log" 2>&1 || { cat "$log" >&2; exit 1; }
+  rm -f "$log"
 fi
 
 if [ ! -f "$src_dir/vcglib/vcg/complex/algorithms/hole.h" ] || [ ! -f "$src_dir/src/common/interfaces.h" ]; then

@@ -33,24 +33,20 @@ struct HoleTriangulation {
 
 namespace detail {
 
+/// Liepa's weight of a (partial) triangulation, compared lexicographically: the worst
+/// dihedral angle first, then the area. The angle is kept as its cosine (no acos in the
+/// O(n^3) loop): a larger cosine is a smaller angle.
 struct DpWeight {
-  double angle = 0; ///< largest dihedral angle, radians
+  double cos_worst = 1; ///< cosine of the largest dihedral angle
   double area = 0;
-  bool operator<(const DpWeight& o) const {
-    return angle != o.angle ? angle < o.angle : area < o.area;
+  bool BetterThan(const DpWeight& o) const {
+    return cos_worst != o.cos_worst ? cos_worst > o.cos_worst : area < o.area;
   }
-  static DpWeight Infinite() {
-    const double inf = std::numeric_limits<double>::infinity();
-    return {inf, inf};
+  static DpWeight Impossible() {
+    return {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   }
-  bool IsInfinite() const { return std::isinf(angle); }
+  bool IsImpossible() const { return std::isinf(cos_worst); }
 };
-
-inline double AngleBetween(const Eigen::Vector3d& n1, const Eigen::Vector3d& n2) {
-  const double l = n1.norm() * n2.norm();
-  if (l <= 0) return M_PI; // a degenerate neighbour is as bad as a fold
-  return std::acos(std::max(-1.0, std::min(1.0, n1.dot(n2) / l)));
-}
 
 inline HoleTriangulation LiepaTriangulation(const std::vector<Eigen::Vector3d>& p,
                                             const std::vector<Eigen::Vector3d>& side_normals,
@@ -60,16 +56,17 @@ inline HoleTriangulation LiepaTriangulation(const std::vector<Eigen::Vector3d>& 
   out.method = "liepa-dp";
   std::vector<DpWeight> w(size_t(n) * n);
   std::vector<int> best(size_t(n) * n, -1);
+  std::vector<Eigen::Vector3d> top_normal(size_t(n) * n, Eigen::Vector3d::Zero());
   auto W = [&](int i, int j) -> DpWeight& { return w[size_t(i) * n + j]; };
   auto L = [&](int i, int j) -> int& { return best[size_t(i) * n + j]; };
-  // The fill triangle over chord (i,j) with apex k, i<k<j, is the face (i, j, k): the loop runs
-  // i -> i+1 in the neighbouring faces, so the fill must run the other way.
-  auto normal = [&](int i, int k, int j) { return TriangleNormal(p[i], p[j], p[k]); };
-  // The triangle across edge (a,b), a<b, of the sub-polygon a..b: the mesh face for a loop
-  // edge, else the best sub-solution's top triangle.
-  auto across = [&](int a, int b) -> Eigen::Vector3d {
-    if (b == a + 1) return side_normals[a];
-    return normal(a, L(a, b), b);
+  // The unit normal across edge (a,b), a<b, of the sub-polygon a..b: the mesh face beside a
+  // loop edge, else the top triangle of the best sub-triangulation.
+  auto across = [&](int a, int b) -> const Eigen::Vector3d& {
+    return b == a + 1 ? side_normals[a] : top_normal[size_t(a) * n + b];
+  };
+  auto cosine = [](const Eigen::Vector3d& unit_a, const Eigen::Vector3d& b, double b_norm) {
+    // A degenerate triangle on either side counts as a fold.
+    return b_norm > 0 && unit_a.squaredNorm() > 0 ? unit_a.dot(b) / b_norm : -1.0;
   };
 
   for (int len = 2; len < n; ++len) {
@@ -77,29 +74,35 @@ inline HoleTriangulation LiepaTriangulation(const std::vector<Eigen::Vector3d>& 
       const int j = i + len;
       const bool chord = !(i == 0 && j == n - 1);
       if (chord && forbidden.count(MakeLocalEdge(i, j))) {
-        W(i, j) = DpWeight::Infinite();
+        W(i, j) = DpWeight::Impossible();
         continue;
       }
-      DpWeight best_w = DpWeight::Infinite();
+      DpWeight best_w = DpWeight::Impossible();
       int best_k = -1;
+      Eigen::Vector3d best_n = Eigen::Vector3d::Zero();
       for (int k = i + 1; k < j; ++k) {
         const DpWeight& a = W(i, k);
         const DpWeight& b = W(k, j);
-        if ((k > i + 1 && a.IsInfinite()) || (j > k + 1 && b.IsInfinite())) continue;
-        const Eigen::Vector3d nt = normal(i, k, j);
-        double angle = std::max(AngleBetween(nt, across(i, k)), AngleBetween(nt, across(k, j)));
-        if (!chord) angle = std::max(angle, AngleBetween(nt, side_normals[n - 1]));
-        DpWeight cand{std::max({angle, a.angle, b.angle}), a.area + b.area + 0.5 * nt.norm()};
-        if (cand < best_w || best_k < 0) {
+        if ((k > i + 1 && a.IsImpossible()) || (j > k + 1 && b.IsImpossible())) continue;
+        // The fill triangle over chord (i,j) with apex k is the face (i, j, k): the loop runs
+        // i -> i+1 in the neighbouring faces, so the fill must run the other way.
+        const Eigen::Vector3d nt = TriangleNormal(p[i], p[j], p[k]);
+        const double len_nt = nt.norm();
+        double c = std::min(cosine(across(i, k), nt, len_nt), cosine(across(k, j), nt, len_nt));
+        if (!chord) c = std::min(c, cosine(side_normals[n - 1], nt, len_nt));
+        const DpWeight cand{std::min({c, a.cos_worst, b.cos_worst}), a.area + b.area + 0.5 * len_nt};
+        if (best_k < 0 || cand.BetterThan(best_w)) {
           best_w = cand;
           best_k = k;
+          best_n = len_nt > 0 ? Eigen::Vector3d(nt / len_nt) : Eigen::Vector3d::Zero();
         }
       }
-      W(i, j) = best_k < 0 ? DpWeight::Infinite() : best_w;
+      W(i, j) = best_k < 0 ? DpWeight::Impossible() : best_w;
       L(i, j) = best_k;
+      top_normal[size_t(i) * n + j] = best_n;
     }
   }
-  if (L(0, n - 1) < 0 || W(0, n - 1).IsInfinite()) return out;
+  if (L(0, n - 1) < 0 || W(0, n - 1).IsImpossible()) return out;
   std::vector<std::pair<int, int>> todo{{0, n - 1}};
   while (!todo.empty()) {
     const int i = todo.back().first, j = todo.back().second;

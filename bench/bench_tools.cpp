@@ -1,0 +1,221 @@
+// Measurement tools for the benchmark (not part of the product):
+//   bench_tools metrics GROUND_TRUTH INPUT RESULT   distances in and around the filled region
+//   bench_tools subdivide IN OUT                    one midpoint (1-to-4) subdivision
+#include "mesh_io.h"
+#include "pipeline.h"
+
+#include <vcg/complex/algorithms/closest.h>
+#include <wrap/io_trimesh/io_mask.h>
+#include <vcg/space/index/grid_static_ptr.h>
+
+#include <QColor>
+#include <QImage>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstdio>
+#include <map>
+#include <random>
+#include <vector>
+
+namespace {
+
+using Grid = vcg::GridStaticPtr<CFaceO, Scalarm>;
+
+struct Surface {
+  CMeshO m;
+  Grid grid;
+  explicit Surface(const std::string& path) {
+    curvature_inpaint::LoadMesh(path, m);
+    m.face.EnableMark();
+    vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
+    grid.Set(m.face.begin(), m.face.end());
+  }
+  // Distance from p to the surface; the closest face's normal in `normal`.
+  double Distance(const Point3m& p, Point3m* normal = nullptr) {
+    Scalarm dist = m.bbox.Diag();
+    Point3m closest;
+    CFaceO* f = vcg::tri::GetClosestFaceBase(m, grid, p, m.bbox.Diag(), dist, closest);
+    if (f && normal) *normal = f->N();
+    return f ? double(dist) : double(m.bbox.Diag());
+  }
+};
+
+struct Samples {
+  std::vector<Point3m> points;
+  std::vector<Point3m> normals;
+};
+
+// Area-weighted random points on the faces of `from` that lie off `reference` (the region a
+// fill covers: faces of the ground truth the input lacks, or faces the filler added).
+Samples SampleRegion(CMeshO& from, Surface& reference, double tol, int count) {
+  std::vector<int> region;
+  std::vector<double> cumulative;
+  double total = 0;
+  for (int f = 0; f < int(from.face.size()); ++f) {
+    const auto& face = from.face[f];
+    const Point3m c = (face.cP(0) + face.cP(1) + face.cP(2)) / 3;
+    if (reference.Distance(c) <= tol) continue;
+    total += vcg::DoubleArea(face) / 2;
+    region.push_back(f);
+    cumulative.push_back(total);
+  }
+  Samples s;
+  if (region.empty()) return s;
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int i = 0; i < count; ++i) {
+    const auto it = std::lower_bound(cumulative.begin(), cumulative.end(), u(rng) * total);
+    const auto& f = from.face[region[std::min<size_t>(it - cumulative.begin(), region.size() - 1)]];
+    double a = u(rng), b = u(rng);
+    if (a + b > 1) a = 1 - a, b = 1 - b;
+    s.points.push_back(f.cP(0) * Scalarm(1 - a - b) + f.cP(1) * Scalarm(a) + f.cP(2) * Scalarm(b));
+    s.normals.push_back(vcg::TriangleNormal(f).Normalize());
+  }
+  return s;
+}
+
+void PrintStats(const char* name, const std::vector<double>& d, double diag) {
+  double mx = 0, sum = 0, sq = 0;
+  for (double x : d) mx = std::max(mx, x), sum += x, sq += x * x;
+  const double n = std::max<size_t>(d.size(), 1);
+  std::printf("\"%s\": {\"max\": %.5f, \"mean\": %.5f, \"rms\": %.5f}", name, 100 * mx / diag,
+              100 * sum / n / diag, 100 * std::sqrt(sq / n) / diag);
+}
+
+int Metrics(const std::string& gt_path, const std::string& input_path, const std::string& result_path) {
+  Surface gt(gt_path), input(input_path), result(result_path);
+  const double diag = gt.m.bbox.Diag();
+  const double tol = 1e-5 * diag;
+  const int count = 20000;
+  const Samples gt_region = SampleRegion(gt.m, input, tol, count);
+  const Samples fill_region = SampleRegion(result.m, input, tol, count);
+  std::vector<double> gt_to_result, result_to_gt;
+  double normal_dev = 0;
+  for (const auto& p : gt_region.points) gt_to_result.push_back(result.Distance(p));
+  for (size_t i = 0; i < fill_region.points.size(); ++i) {
+    Point3m n;
+    result_to_gt.push_back(gt.Distance(fill_region.points[i], &n));
+    const double c = std::max(-1.0, std::min(1.0, double(n * fill_region.normals[i])));
+    normal_dev += std::acos(c) * 180 / M_PI;
+  }
+  const auto census = curvature_inpaint::CountHoles(result.m);
+  std::printf("{");
+  PrintStats("gt_to_result", gt_to_result, diag);
+  std::printf(", ");
+  PrintStats("result_to_gt", result_to_gt, diag);
+  std::printf(", \"normal_deviation_deg\": %.3f, \"holes_left\": %zu, \"non_manifold_edges\": %zu, "
+              "\"filled_samples\": %zu}\n",
+              normal_dev / std::max<size_t>(fill_region.points.size(), 1), census.loop_edges.size(),
+              census.non_manifold_edges, fill_region.points.size());
+  return 0;
+}
+
+int Subdivide(const std::string& in, const std::string& out) {
+  CMeshO m;
+  const int mask = curvature_inpaint::LoadMesh(in, m);
+  CMeshO r;
+  std::map<std::pair<int, int>, int> mid;
+  std::vector<Point3m> pts;
+  for (const auto& v : m.vert) pts.push_back(v.cP());
+  auto midpoint = [&](int a, int b) {
+    const auto key = std::minmax(a, b);
+    auto it = mid.find(key);
+    if (it != mid.end()) return it->second;
+    pts.push_back((pts[a] + pts[b]) / 2);
+    return mid[key] = int(pts.size()) - 1;
+  };
+  std::vector<std::array<int, 3>> tris;
+  for (const auto& f : m.face) {
+    const int a = vcg::tri::Index(m, f.cV(0)), b = vcg::tri::Index(m, f.cV(1)), c = vcg::tri::Index(m, f.cV(2));
+    const int ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
+    tris.push_back({a, ab, ca});
+    tris.push_back({b, bc, ab});
+    tris.push_back({c, ca, bc});
+    tris.push_back({ab, bc, ca});
+  }
+  vcg::tri::Allocator<CMeshO>::AddVertices(r, pts.size());
+  for (size_t i = 0; i < pts.size(); ++i) r.vert[i].P() = pts[i];
+  vcg::tri::Allocator<CMeshO>::AddFaces(r, tris.size());
+  for (size_t i = 0; i < tris.size(); ++i)
+    for (int k = 0; k < 3; ++k) r.face[i].V(k) = &r.vert[tris[i][k]];
+  curvature_inpaint::SaveMesh(out, r, mask & vcg::tri::io::Mask::IOM_VERTCOORD);
+  return 0;
+}
+
+// Flat-shaded orthographic view of the faces within `radius` of `center`, looking against the
+// mean normal there: for looking at fills side by side.
+int Render(const std::string& in, const std::string& png, const Point3m& center, double radius) {
+  CMeshO m;
+  curvature_inpaint::LoadMesh(in, m);
+  vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
+  std::vector<const CFaceO*> near;
+  Point3m view(0, 0, 0);
+  for (const auto& f : m.face) {
+    const Point3m c = (f.cP(0) + f.cP(1) + f.cP(2)) / 3;
+    if (vcg::Distance(c, center) > radius) continue;
+    near.push_back(&f);
+    if (vcg::Distance(c, center) < radius / 2) view += vcg::TriangleNormal(f);
+  }
+  view.Normalize();
+  Point3m up = std::abs(view[1]) < 0.9 ? Point3m(0, 1, 0) : Point3m(1, 0, 0);
+  Point3m right = (up ^ view).Normalize();
+  up = (view ^ right).Normalize();
+  const int size = 512;
+  QImage image(size, size, QImage::Format_RGB32);
+  image.fill(QColor(30, 30, 40));
+  std::vector<double> depth(size * size, -1e30);
+  const Point3m light = (view + right * 0.4f + up * 0.6f).Normalize();
+  for (const CFaceO* f : near) {
+    double sx[3], sy[3], sz[3];
+    for (int k = 0; k < 3; ++k) {
+      const Point3m d = f->cP(k) - center;
+      sx[k] = (d * right / radius * 0.5 + 0.5) * size;
+      sy[k] = (0.5 - d * up / radius * 0.5) * size;
+      sz[k] = d * view;
+    }
+    const double shade = std::max(0.0, double(f->cN() * light));
+    const int g = int(40 + 200 * shade);
+    const int x0 = std::max(0, int(std::floor(std::min({sx[0], sx[1], sx[2]}))));
+    const int x1 = std::min(size - 1, int(std::ceil(std::max({sx[0], sx[1], sx[2]}))));
+    const int y0 = std::max(0, int(std::floor(std::min({sy[0], sy[1], sy[2]}))));
+    const int y1 = std::min(size - 1, int(std::ceil(std::max({sy[0], sy[1], sy[2]}))));
+    const double area = (sx[1] - sx[0]) * (sy[2] - sy[0]) - (sx[2] - sx[0]) * (sy[1] - sy[0]);
+    if (std::abs(area) < 1e-12) continue;
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) {
+        const double px = x + 0.5, py = y + 0.5;
+        const double w0 = ((sx[1] - px) * (sy[2] - py) - (sx[2] - px) * (sy[1] - py)) / area;
+        const double w1 = ((sx[2] - px) * (sy[0] - py) - (sx[0] - px) * (sy[2] - py)) / area;
+        const double w2 = 1 - w0 - w1;
+        if (w0 < 0 || w1 < 0 || w2 < 0) continue;
+        const double z = w0 * sz[0] + w1 * sz[1] + w2 * sz[2];
+        if (z <= depth[y * size + x]) continue;
+        depth[y * size + x] = z;
+        const bool edge = std::getenv("RENDER_EDGES") && std::min({w0, w1, w2}) < 0.04;
+        const int s = edge ? g / 2 : g;
+        image.setPixel(x, y, qRgb(s, s, std::min(255, s + 10)));
+      }
+  }
+  return image.save(QString::fromStdString(png)) ? 0 : 1;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  try {
+    const std::string cmd = argc > 1 ? argv[1] : "";
+    if (cmd == "metrics" && argc == 5) return Metrics(argv[2], argv[3], argv[4]);
+    if (cmd == "subdivide" && argc == 4) return Subdivide(argv[2], argv[3]);
+    if (cmd == "render" && argc == 8)
+      return Render(argv[2], argv[3], Point3m(std::stof(argv[4]), std::stof(argv[5]), std::stof(argv[6])),
+                    std::stod(argv[7]));
+    std::fprintf(stderr, "usage: bench_tools metrics GT INPUT RESULT | subdivide IN OUT | "
+                         "render MESH OUT.png CX CY CZ RADIUS\n");
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_tools: %s\n", e.what());
+    return 1;
+  }
+}
