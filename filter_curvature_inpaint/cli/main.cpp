@@ -15,8 +15,11 @@ namespace {
 const char* const kUsage =
     "usage:\n"
     "  curvature-inpaint coarse IN OUT [--max-hole-edges N] [--selected-only]\n"
+    "                                 [--liepa-max-edges M] [--no-refine] [--no-fair]\n"
     "      Fill every hole of IN (stages 0-2: Liepa triangulation, refinement, fairing) and\n"
     "      write OUT. Formats: .ply .off .obj .stl. N = 0 (default) fills holes of any size.\n"
+    "      Holes up to M edges (default 200) get the optimal triangulation, larger ones\n"
+    "      vcglib's ear cutting. --selected-only fills holes beside selected faces (PLY).\n"
     "  curvature-inpaint info IN\n"
     "      Print the vertex, face and hole counts of IN (boundary edges of each hole).\n"
     "  curvature-inpaint punch IN OUT --seed-vertex V --radius-frac R\n"
@@ -90,6 +93,9 @@ int Coarse(Args& args) {
   vcg_ext::CoarseFillParams params;
   params.max_hole_edges = int(args.Integer("--max-hole-edges", 0, 0));
   params.selected_only = args.Flag("--selected-only");
+  params.dp_max_edges = int(args.Integer("--liepa-max-edges", params.dp_max_edges, 3));
+  params.refine = !args.Flag("--no-refine");
+  params.fair = !args.Flag("--no-fair");
   const auto files = args.Positional(2);
   CMeshO m;
   const int mask = curvature_inpaint::LoadMesh(files[0], m);
