@@ -5,6 +5,7 @@
 #include "pipeline.h"
 
 #include <vcg/complex/algorithms/closest.h>
+#include <vcg/complex/append.h>
 #include <wrap/io_trimesh/io_mask.h>
 #include <vcg/space/index/grid_static_ptr.h>
 
@@ -144,6 +145,18 @@ int Subdivide(const std::string& in, const std::string& out) {
   return 0;
 }
 
+// A and B in one file, B moved beside A: a larger mesh around exactly the same holes of A.
+int Append(const std::string& a_path, const std::string& b_path, const std::string& out) {
+  CMeshO a, b;
+  curvature_inpaint::LoadMesh(a_path, a);
+  curvature_inpaint::LoadMesh(b_path, b);
+  const Point3m shift(2 * a.bbox.Diag() + b.bbox.Diag(), 0, 0);
+  for (auto& v : b.vert) v.P() += shift;
+  vcg::tri::Append<CMeshO, CMeshO>::Mesh(a, b);
+  curvature_inpaint::SaveMesh(out, a, vcg::tri::io::Mask::IOM_VERTCOORD);
+  return 0;
+}
+
 // Flat-shaded orthographic view of the faces within `radius` of `center`, looking against the
 // mean normal there: for looking at fills side by side.
 int Render(const std::string& in, const std::string& png, const Point3m& center, double radius) {
@@ -208,11 +221,12 @@ int main(int argc, char** argv) {
     const std::string cmd = argc > 1 ? argv[1] : "";
     if (cmd == "metrics" && argc == 5) return Metrics(argv[2], argv[3], argv[4]);
     if (cmd == "subdivide" && argc == 4) return Subdivide(argv[2], argv[3]);
+    if (cmd == "append" && argc == 5) return Append(argv[2], argv[3], argv[4]);
     if (cmd == "render" && argc == 8)
       return Render(argv[2], argv[3], Point3m(std::stof(argv[4]), std::stof(argv[5]), std::stof(argv[6])),
                     std::stod(argv[7]));
     std::fprintf(stderr, "usage: bench_tools metrics GT INPUT RESULT | subdivide IN OUT | "
-                         "render MESH OUT.png CX CY CZ RADIUS\n");
+                         "append A B OUT | render MESH OUT.png CX CY CZ RADIUS\n");
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_tools: %s\n", e.what());

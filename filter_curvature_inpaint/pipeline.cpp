@@ -26,7 +26,7 @@ std::vector<std::string> DescribeCoarseFill(const vcg_ext::CoarseFillResult& res
     if (r.filled) {
       std::snprintf(buf, sizeof buf, "hole %zu: %d edges%s, %s, %zu new vertices, %zu faces, %s, %.1f ms%s%s",
                     h + 1, r.boundary_edges, r.pinched ? " (pinched)" : "", r.triangulation.c_str(),
-                    r.new_vertices.size(), r.new_faces.size(), r.faired ? "faired" : "not faired",
+                    r.new_vertices.size(), r.new_faces.size(), r.planar_cap ? "flat cap" : r.faired ? "faired" : "not faired",
                     1000 * r.seconds, r.problem.empty() ? "" : ": ", r.problem.c_str());
     } else {
       std::snprintf(buf, sizeof buf, "hole %zu: %d edges%s, left open: %s", h + 1, r.boundary_edges,

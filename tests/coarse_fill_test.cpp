@@ -222,3 +222,61 @@ TEST(CoarseFill, RejectsNonManifoldEdges) {
 }
 
 } // namespace
+
+namespace {
+
+// A closed prism (a hexagonal "statue" standing on its base) with its base missing: the base
+// loop is planar and its walls meet it at a right angle.
+void MakeOpenPrism(Mesh& m, int sides, int rings) {
+  m.Clear();
+  const float h = 1.0f;
+  auto vi = vcg::tri::Allocator<Mesh>::AddVertices(m, sides * (rings + 1) + 1);
+  for (int r = 0; r <= rings; ++r)
+    for (int s = 0; s < sides; ++s) {
+      const double a = 2 * M_PI * s / sides;
+      m.vert[r * sides + s].P() = vcg::Point3f(float(std::cos(a)), float(std::sin(a)), h * r / rings);
+    }
+  m.vert.back().P() = vcg::Point3f(0, 0, h); // top centre
+  (void)vi;
+  for (int r = 0; r < rings; ++r)
+    for (int s = 0; s < sides; ++s) {
+      const int a = r * sides + s, b = r * sides + (s + 1) % sides;
+      vcg::tri::Allocator<Mesh>::AddFace(m, &m.vert[a], &m.vert[b], &m.vert[b + sides]);
+      vcg::tri::Allocator<Mesh>::AddFace(m, &m.vert[a], &m.vert[b + sides], &m.vert[a + sides]);
+    }
+  const int top = int(m.vert.size()) - 1;
+  for (int s = 0; s < sides; ++s)
+    vcg::tri::Allocator<Mesh>::AddFace(m, &m.vert[rings * sides + s],
+                                       &m.vert[rings * sides + (s + 1) % sides], &m.vert[top]);
+}
+
+TEST(CoarseFill, PlanarCapAtACreaseStaysFlat) {
+  Mesh m;
+  MakeOpenPrism(m, 24, 8);
+  ASSERT_EQ(test::Inspect(m).loops, 1u);
+
+  const auto result = vcg_ext::CoarseFill(m);
+
+  ASSERT_EQ(result.FilledCount(), 1);
+  EXPECT_TRUE(result.holes[0].planar_cap);
+  EXPECT_GT(result.holes[0].new_vertices.size(), 10u);
+  for (int v : result.holes[0].new_vertices) EXPECT_NEAR(m.vert[v].cP()[2], 0.0, 1e-5);
+  EXPECT_EQ(test::Inspect(m).boundary_edges, 0u);
+}
+
+TEST(CoarseFill, PlanarCapCanBeFairedOnRequest) {
+  Mesh m;
+  MakeOpenPrism(m, 24, 8);
+  vcg_ext::CoarseFillParams params;
+  params.flat_planar_caps = false;
+
+  const auto result = vcg_ext::CoarseFill(m, params);
+
+  ASSERT_EQ(result.FilledCount(), 1);
+  EXPECT_FALSE(result.holes[0].planar_cap);
+  double lowest = 0;
+  for (int v : result.holes[0].new_vertices) lowest = std::min(lowest, double(m.vert[v].cP()[2]));
+  EXPECT_LT(lowest, -0.05) << "a thin plate continues the walls below the base";
+}
+
+} // namespace

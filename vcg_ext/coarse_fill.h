@@ -12,6 +12,8 @@
 #include "mesh_checks.h"
 #include "unit_box.h"
 
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <vcg/complex/algorithms/update/selection.h>
 #include <wrap/callback.h>
 
@@ -29,6 +31,10 @@ struct CoarseFillParams {
   bool refine = true;             ///< match the surrounding edge density
   double density_alpha = 1.41421356; ///< Liepa's alpha: larger gives a denser fill
   bool fair = true;               ///< bi-Laplacian fairing of the inserted vertices
+  /// A planar loop whose surroundings meet its plane at a crease (the cut bottom of a statue,
+  /// a window) is closed by a flat membrane instead of a thin plate, which would bulge to
+  /// continue the walls around it.
+  bool flat_planar_caps = true;
   bool select_new_faces = true;   ///< replace the face selection with the new faces
 };
 
@@ -38,6 +44,7 @@ struct HoleFillReport {
   bool filled = false;
   std::string triangulation; ///< "liepa-dp" or "vcg-ears"
   bool faired = false;
+  bool planar_cap = false;   ///< closed flat (IsPlanarCap) rather than as a thin plate
   std::string problem;       ///< why the hole stayed open or was not faired; empty if none
   double seconds = 0;
   std::vector<int> loop;         ///< the loop's vertex indices in the mesh
@@ -127,6 +134,25 @@ std::vector<HoleCollar> BuildCollars(const MeshType& m, const std::vector<HoleLo
   return collars;
 }
 
+/// Whether a loop is planar (within 0.5 % of its size) and the faces beside it leave its plane
+/// at a crease (more than 35 degrees on average): then the missing surface is most likely a
+/// flat cap rather than the continuation of its surroundings.
+inline bool IsPlanarCap(const std::vector<Eigen::Vector3d>& points,
+                        const std::vector<Eigen::Vector3d>& side_normals) {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const auto& p : points) centre += p;
+  centre /= double(points.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  Eigen::AlignedBox3d box;
+  for (const auto& p : points) cov += (p - centre) * (p - centre).transpose(), box.extend(p);
+  const Eigen::Vector3d normal = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvectors().col(0);
+  double off_plane = 0, alignment = 0;
+  for (const auto& p : points) off_plane = std::max(off_plane, std::abs((p - centre).dot(normal)));
+  for (const auto& n : side_normals) alignment += std::abs(n.dot(normal));
+  alignment /= double(side_normals.size());
+  return off_plane <= 0.005 * box.diagonal().norm() && alignment < std::cos(35 * M_PI / 180);
+}
+
 /// Builds one hole's patch: triangulation, refinement, fairing.
 inline HolePatch FillOneHole(const std::vector<Eigen::Vector3d>& loop_points,
                              const HoleCollar& collar, const CoarseFillParams& params,
@@ -164,7 +190,7 @@ inline HolePatch FillOneHole(const std::vector<Eigen::Vector3d>& loop_points,
     rp.alpha = params.density_alpha;
     RefineHolePatch(patch, collar.edge_scale, rp);
   } else {
-    detail::RelaxPatch(patch, HoleRefinementParams().max_flip_rounds);
+    RelaxHolePatch(patch);
   }
   for (const auto& t : patch.triangles)
     for (int k = 0; k < 3; ++k)
@@ -175,7 +201,10 @@ inline HolePatch FillOneHole(const std::vector<Eigen::Vector3d>& loop_points,
       }
   report.filled = true;
   if (params.fair && patch.NewVertexCount() > 0) {
-    report.faired = FairHolePatch(patch, collar);
+    HoleFairingParams fp;
+    report.planar_cap = params.flat_planar_caps && IsPlanarCap(loop_points, collar.side_normals);
+    if (report.planar_cap) fp.order = 1, fp.iterations = 1; // weights cannot bend a plane
+    report.faired = FairHolePatch(patch, collar, fp);
     if (!report.faired) report.problem = "fairing failed on a degenerate neighbourhood; kept flat";
   }
   return patch;

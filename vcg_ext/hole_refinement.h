@@ -7,7 +7,6 @@
 #include "hole_patch.h"
 
 #include <cmath>
-#include <unordered_map>
 #include <vector>
 
 namespace vcg_ext {
@@ -15,49 +14,114 @@ namespace vcg_ext {
 struct HoleRefinementParams {
   double alpha = std::sqrt(2.0); ///< Liepa's density control; larger = denser
   int max_new_vertices = 200000; ///< safety bound for holes far larger than their surroundings
-  int max_flip_rounds = 100;     ///< bound on each relaxation; it converges long before
 };
 
 namespace detail {
 
-/// Edge -> the (at most two) patch triangles that use it.
-class PatchEdgeMap {
+/// Corner-table topology of a patch: corner 3t+k starts edge k of triangle t, which runs
+/// tri[k] -> tri[k+1]; opposite[c] is the corner of the same edge in the other triangle, or
+/// -1 on the loop. Splits and flips update it in O(1), so refinement never rebuilds maps.
+class PatchTopology {
 public:
-  explicit PatchEdgeMap(const std::vector<std::array<int, 3>>& tris) {
-    for (int t = 0; t < int(tris.size()); ++t) Add(tris[t], t);
+  explicit PatchTopology(HolePatch& patch) : patch_(patch) {
+    auto& tris = patch_.triangles;
+    opposite_.assign(3 * tris.size(), -1);
+    corner_of_.assign(patch_.points.size(), -1);
+    std::vector<std::pair<uint64_t, int>> keyed;
+    keyed.reserve(3 * tris.size());
+    for (int t = 0; t < int(tris.size()); ++t)
+      for (int k = 0; k < 3; ++k) {
+        keyed.emplace_back(Key(tris[t][k], tris[t][(k + 1) % 3]), 3 * t + k);
+        corner_of_[tris[t][k]] = 3 * t + k;
+      }
+    std::sort(keyed.begin(), keyed.end());
+    for (size_t i = 0; i + 1 < keyed.size(); ++i)
+      if (keyed[i].first == keyed[i + 1].first) {
+        opposite_[keyed[i].second] = keyed[i + 1].second;
+        opposite_[keyed[i + 1].second] = keyed[i].second;
+        ++i;
+      }
   }
-  void Add(const std::array<int, 3>& tri, int t) {
-    for (int k = 0; k < 3; ++k) {
-      auto& slot =
-          map_.emplace(Key(tri[k], tri[(k + 1) % 3]), std::array<int, 2>{{-1, -1}}).first->second;
-      (slot[0] < 0 ? slot[0] : slot[1]) = t;
+
+  int Vertex(int corner) const { return patch_.triangles[corner / 3][corner % 3]; }
+  static int Next(int corner) { return corner / 3 * 3 + (corner + 1) % 3; }
+  static int Prev(int corner) { return corner / 3 * 3 + (corner + 2) % 3; }
+  int Opposite(int corner) const { return opposite_[corner]; }
+  int CornerCount() const { return int(opposite_.size()); }
+
+  /// Whether vertices a and b share an edge in the patch (walks a's fan both ways).
+  bool HasEdge(int a, int b) const {
+    const int start = corner_of_[a];
+    if (start < 0) return false;
+    for (int dir = 0; dir < 2; ++dir) {
+      int c = start;
+      for (;;) {
+        if (Vertex(Next(c)) == b || Vertex(Prev(c)) == b) return true;
+        // Rotate around a: across the edge entering a (dir 0) or leaving a (dir 1).
+        const int o = dir == 0 ? opposite_[Prev(c)] : opposite_[c];
+        if (o < 0) break;           // reached the loop: walk the other way round
+        c = dir == 0 ? o : Next(o);
+        if (c == start) return false; // a closed fan, walked completely
+      }
     }
+    return false;
   }
-  void Remove(const std::array<int, 3>& tri, int t) {
-    for (int k = 0; k < 3; ++k) {
-      auto it = map_.find(Key(tri[k], tri[(k + 1) % 3]));
-      if (it == map_.end()) continue;
-      for (int& s : it->second)
-        if (s == t) s = -1;
-      if (it->second[0] < 0 && it->second[1] < 0) map_.erase(it);
-    }
+
+  /// Splits triangle t at new vertex v into (a,b,v), (b,c,v), (c,a,v).
+  void Split(int t, int v) {
+    auto& tris = patch_.triangles;
+    const auto tri = tris[t];
+    const int t1 = int(tris.size()), t2 = t1 + 1;
+    tris[t] = {tri[0], tri[1], v};
+    tris.push_back({tri[1], tri[2], v});
+    tris.push_back({tri[2], tri[0], v});
+    const int p0 = opposite_[3 * t], p1 = opposite_[3 * t + 1], p2 = opposite_[3 * t + 2];
+    opposite_.resize(3 * tris.size(), -1);
+    Link(3 * t, p0);
+    Link(3 * t1, p1);
+    Link(3 * t2, p2);
+    Link(3 * t + 1, 3 * t1 + 2);
+    Link(3 * t1 + 1, 3 * t2 + 2);
+    Link(3 * t2 + 1, 3 * t + 2);
+    corner_of_.resize(patch_.points.size(), -1);
+    corner_of_[tri[1]] = 3 * t + 1;
+    corner_of_[tri[2]] = 3 * t1 + 1;
+    corner_of_[v] = 3 * t + 2;
   }
-  bool Has(int a, int b) const { return map_.count(Key(a, b)) > 0; }
-  std::array<int, 2> Faces(int a, int b) const {
-    auto it = map_.find(Key(a, b));
-    return it == map_.end() ? std::array<int, 2>{{-1, -1}} : it->second;
-  }
-  template <class F>
-  void ForEachEdge(F f) const {
-    for (const auto& kv : map_) f(int(kv.first >> 32), int(kv.first & 0xffffffffu));
+
+  /// Flips the edge starting at corner e: triangles (a,b,c) and (b,a,d) become (a,d,c) and
+  /// (b,c,d). Precondition: the edge is interior.
+  void Flip(int e) {
+    auto& tris = patch_.triangles;
+    const int o = opposite_[e];
+    const int t1 = e / 3, t2 = o / 3;
+    const int a = Vertex(e), b = Vertex(Next(e)), c = Vertex(Prev(e)), d = Vertex(Prev(o));
+    const int x1 = opposite_[Next(e)], x2 = opposite_[Prev(e)];
+    const int y1 = opposite_[Next(o)], y2 = opposite_[Prev(o)];
+    tris[t1] = {a, d, c};
+    tris[t2] = {b, c, d};
+    Link(3 * t1, y1);
+    Link(3 * t1 + 2, x2);
+    Link(3 * t2, x1);
+    Link(3 * t2 + 2, y2);
+    Link(3 * t1 + 1, 3 * t2 + 1);
+    corner_of_[a] = 3 * t1;
+    corner_of_[b] = 3 * t2;
+    corner_of_[c] = 3 * t1 + 2;
+    corner_of_[d] = 3 * t1 + 1;
   }
 
 private:
   static uint64_t Key(int a, int b) {
-    const auto lo = uint64_t(std::min(a, b)), hi = uint64_t(std::max(a, b));
-    return (lo << 32) | hi;
+    return (uint64_t(std::min(a, b)) << 32) | uint64_t(std::max(a, b));
   }
-  std::unordered_map<uint64_t, std::array<int, 2>> map_;
+  void Link(int c, int o) {
+    opposite_[c] = o;
+    if (o >= 0) opposite_[o] = c;
+  }
+  HolePatch& patch_;
+  std::vector<int> opposite_;
+  std::vector<int> corner_of_;
 };
 
 inline double Angle(const Eigen::Vector3d& at, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
@@ -65,66 +129,52 @@ inline double Angle(const Eigen::Vector3d& at, const Eigen::Vector3d& a, const E
   return std::atan2(u.cross(v).norm(), u.dot(v));
 }
 
-/// Flips interior edges until every one is locally Delaunay (opposite angles sum to at most
-/// pi) and none duplicates a forbidden mesh edge. Returns the number of flips.
-inline int RelaxPatch(HolePatch& patch, int max_rounds) {
-  auto& tris = patch.triangles;
+/// Lawson's flips from the edges in `stack` until every edge reached is locally Delaunay
+/// (opposite angles sum to at most pi) and none duplicates a forbidden mesh edge. A flip that
+/// would fold the pair over, or create an edge that exists, is skipped. Returns the flips.
+inline int RelaxEdges(HolePatch& patch, PatchTopology& topo, std::vector<int>& stack) {
+  const auto& P = patch.points;
   int flips = 0;
-  for (int round = 0; round < max_rounds; ++round) {
-    PatchEdgeMap edges(tris);
-    std::vector<LocalEdge> candidates;
-    edges.ForEachEdge([&](int a, int b) {
-      if (!patch.IsBoundaryEdge(a, b)) candidates.push_back(MakeLocalEdge(a, b));
-    });
-    int round_flips = 0;
-    for (const LocalEdge& e : candidates) {
-      const auto ft = edges.Faces(e.first, e.second);
-      if (ft[0] < 0 || ft[1] < 0) continue;
-      // Orient: t1 runs a -> b, t2 runs b -> a.
-      const int t1 = ft[0], t2 = ft[1];
-      int a = e.first, b = e.second;
-      auto corner = [&](int t, int from) {
-        for (int k = 0; k < 3; ++k)
-          if (tris[t][k] == from) return k;
-        return -1;
-      };
-      int k1 = corner(t1, a);
-      if (tris[t1][(k1 + 1) % 3] != b) {
-        std::swap(a, b);
-        k1 = corner(t1, a);
-      }
-      if (k1 < 0 || tris[t1][(k1 + 1) % 3] != b) continue;
-      const int k2 = corner(t2, b);
-      if (k2 < 0 || tris[t2][(k2 + 1) % 3] != a) continue;
-      const int c = tris[t1][(k1 + 2) % 3], d = tris[t2][(k2 + 2) % 3];
-      if (c == d || edges.Has(c, d) || patch.forbidden_edges.count(MakeLocalEdge(c, d))) continue;
-      const auto& P = patch.points;
-      const bool forced = patch.forbidden_edges.count(MakeLocalEdge(a, b)) > 0;
-      const bool delaunay_violated =
-          Angle(P[c], P[a], P[b]) + Angle(P[d], P[a], P[b]) > M_PI + 1e-9;
-      if (!forced && !delaunay_violated) continue;
-      // The flipped pair must not fold over: both new normals agree with the old ones.
-      const Eigen::Vector3d n_old = TriangleNormal(P[a], P[b], P[c]).normalized() +
-                                    TriangleNormal(P[b], P[a], P[d]).normalized();
-      const std::array<int, 3> n1{a, d, c}, n2{b, c, d};
-      if (TriangleNormal(P[a], P[d], P[c]).dot(n_old) <= 0 ||
-          TriangleNormal(P[b], P[c], P[d]).dot(n_old) <= 0)
-        continue;
-      edges.Remove(tris[t1], t1);
-      edges.Remove(tris[t2], t2);
-      tris[t1] = n1;
-      tris[t2] = n2;
-      edges.Add(tris[t1], t1);
-      edges.Add(tris[t2], t2);
-      ++round_flips;
-    }
-    flips += round_flips;
-    if (round_flips == 0) break;
+  const int budget = 50 * topo.CornerCount() + 1000; // Lawson terminates; this only guards
+  while (!stack.empty() && flips < budget) {
+    const int e = stack.back();
+    stack.pop_back();
+    const int o = topo.Opposite(e);
+    if (o < 0) continue;
+    const int a = topo.Vertex(e), b = topo.Vertex(PatchTopology::Next(e));
+    const int c = topo.Vertex(PatchTopology::Prev(e)), d = topo.Vertex(PatchTopology::Prev(o));
+    const bool forced = patch.forbidden_edges.count(MakeLocalEdge(a, b)) > 0;
+    if (!forced && Angle(P[c], P[a], P[b]) + Angle(P[d], P[a], P[b]) <= M_PI + 1e-9) continue;
+    if (c == d || patch.forbidden_edges.count(MakeLocalEdge(c, d)) || topo.HasEdge(c, d)) continue;
+    const Eigen::Vector3d n_old =
+        TriangleNormal(P[a], P[b], P[c]).normalized() + TriangleNormal(P[b], P[a], P[d]).normalized();
+    if (TriangleNormal(P[a], P[d], P[c]).dot(n_old) <= 0 ||
+        TriangleNormal(P[b], P[c], P[d]).dot(n_old) <= 0)
+      continue;
+    topo.Flip(e);
+    ++flips;
+    // The four edges of the quad may have stopped being Delaunay.
+    const int t1 = e / 3, t2 = o / 3;
+    for (int corner : {3 * t1, 3 * t1 + 2, 3 * t2, 3 * t2 + 2}) stack.push_back(corner);
   }
+  stack.clear();
   return flips;
 }
 
+inline std::vector<int> AllCorners(const PatchTopology& topo) {
+  std::vector<int> corners(topo.CornerCount());
+  for (int c = 0; c < topo.CornerCount(); ++c) corners[c] = c;
+  return corners;
+}
+
 } // namespace detail
+
+/// Flips the edges of `patch` until it is locally Delaunay (for a fill that is not refined).
+inline int RelaxHolePatch(HolePatch& patch) {
+  detail::PatchTopology topo(patch);
+  std::vector<int> stack = detail::AllCorners(topo);
+  return detail::RelaxEdges(patch, topo, stack);
+}
 
 /// Refines `patch` in place. `edge_scale[i]` is the target edge length around loop vertex i.
 /// Inserted vertices are appended to patch.points with their parents recorded; loop vertices
@@ -134,10 +184,11 @@ inline int RefineHolePatch(HolePatch& patch, const std::vector<double>& edge_sca
   std::vector<double> sigma(edge_scale.begin(), edge_scale.begin() + patch.boundary_count);
   sigma.resize(patch.points.size(), 0.0);
   const double alpha = params.alpha;
+  detail::PatchTopology topo(patch);
+  std::vector<int> stack = detail::AllCorners(topo);
+  detail::RelaxEdges(patch, topo, stack);
   int inserted = 0;
-  detail::RelaxPatch(patch, params.max_flip_rounds);
   for (;;) {
-    bool split_any = false;
     const int count = int(patch.triangles.size());
     for (int t = 0; t < count && inserted < params.max_new_vertices; ++t) {
       const auto tri = patch.triangles[t];
@@ -154,14 +205,13 @@ inline int RefineHolePatch(HolePatch& patch, const std::vector<double>& edge_sca
       patch.points.push_back(c);
       patch.parents.push_back(tri);
       sigma.push_back(sc);
-      patch.triangles[t] = {tri[0], tri[1], v};
-      patch.triangles.push_back({tri[1], tri[2], v});
-      patch.triangles.push_back({tri[2], tri[0], v});
+      topo.Split(t, v);
+      const int t1 = int(patch.triangles.size()) - 2;
+      for (int corner : {3 * t, 3 * t1, 3 * (t1 + 1)}) stack.push_back(corner);
       ++inserted;
-      split_any = true;
     }
-    if (!split_any) break;
-    detail::RelaxPatch(patch, params.max_flip_rounds);
+    if (stack.empty()) break; // no split in this round
+    detail::RelaxEdges(patch, topo, stack);
     if (inserted >= params.max_new_vertices) break;
   }
   return inserted;
