@@ -27,6 +27,14 @@ class CoarseFill(TempDirTest):
         self.assertIn("(pinched)", r.stderr)
         self.assertEqual(info(out)["holes"], 0)
 
+    def test_large_real_hole_is_closed_by_the_ears(self):
+        out = self.path("lion.ply")
+        r = run([TOOL, "coarse", os.path.join(SHARED_MESHES, "lionstatue.ply"), out])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("322 edges, vcg-ears", r.stderr)
+        self.assertIn("opposite orientation", r.stderr)  # the scan's own flipped faces, reported
+        self.assertEqual(info(out)["holes"], 0)
+
     def test_windows_over_the_size_limit_stay_open(self):
         src = os.path.join(SHARED_MESHES, "tower_holes.ply")
         sizes = info(src)["hole_edges"]

@@ -280,3 +280,29 @@ TEST(CoarseFill, PlanarCapCanBeFairedOnRequest) {
 }
 
 } // namespace
+
+namespace {
+
+TEST(CoarseFill, HoleOfOverAThousandEdgesTakesTheEars) {
+  Mesh m;
+  test::MakePlane(m, 400, 1.0f);
+  vcg_ext::PunchHole(m, vcg::Point3f(0.5f, 0.5f, 0), 0.45f);
+  const auto loops = vcg_ext::FindHoleLoops(m, vcg_ext::CensusEdges(m)).holes;
+  ASSERT_EQ(loops.size(), 2u); // the hole and the plane's outer border
+  const int hole_edges = std::min(loops[0].EdgeCount(), loops[1].EdgeCount());
+  ASSERT_GT(hole_edges, 1000);
+  vcg_ext::CoarseFillParams params;
+  params.max_hole_edges = hole_edges; // keep the outer border open
+
+  const auto result = vcg_ext::CoarseFill(m, params);
+
+  ASSERT_EQ(result.FilledCount(), 1);
+  EXPECT_EQ(result.holes[0].boundary_edges, hole_edges);
+  EXPECT_EQ(result.holes[0].triangulation, "vcg-ears");
+  const auto topo = test::Inspect(m);
+  EXPECT_EQ(topo.loops, 1u);
+  EXPECT_EQ(topo.non_manifold_edges, 0u);
+  for (int v : result.holes[0].new_vertices) ASSERT_NEAR(m.vert[v].cP()[2], 0.0, 1e-5);
+}
+
+} // namespace

@@ -84,8 +84,14 @@ inline HoleTriangulation LiepaTriangulation(const std::vector<Eigen::Vector3d>& 
         const DpWeight& a = W(i, k);
         const DpWeight& b = W(k, j);
         if ((k > i + 1 && a.IsImpossible()) || (j > k + 1 && b.IsImpossible())) continue;
-        // Bound: the sub-triangulations alone are already worse than the best candidate.
-        if (best_k >= 0 && std::min(a.cos_worst, b.cos_worst) < best_w.cos_worst) continue;
+        // Bound: the sub-triangulations alone are already no better than the best candidate
+        // (the new triangle can only lower the cosine and add area).
+        if (best_k >= 0) {
+          const double sub_cos = std::min(a.cos_worst, b.cos_worst);
+          if (sub_cos < best_w.cos_worst ||
+              (sub_cos <= best_w.cos_worst && a.area + b.area >= best_w.area))
+            continue;
+        }
         // The fill triangle over chord (i,j) with apex k is the face (i, j, k): the loop runs
         // i -> i+1 in the neighbouring faces, so the fill must run the other way.
         const Eigen::Vector3d nt = TriangleNormal(p[i], p[j], p[k]);
