@@ -157,19 +157,20 @@ int Append(const std::string& a_path, const std::string& b_path, const std::stri
   return 0;
 }
 
-// Flat-shaded orthographic view of the faces within `radius` of `center`, looking against the
-// mean normal there: for looking at fills side by side.
-int Render(const std::string& in, const std::string& png, const Point3m& center, double radius) {
+// Flat-shaded orthographic view of the faces within `radius` of `center`, looking along -view
+// (default: the mean normal there): for looking at fills side by side.
+int Render(const std::string& in, const std::string& png, const Point3m& center, double radius,
+           Point3m view) {
   CMeshO m;
   curvature_inpaint::LoadMesh(in, m);
   vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
   std::vector<const CFaceO*> near;
-  Point3m view(0, 0, 0);
+  const bool view_given = view.Norm() > 0;
   for (const auto& f : m.face) {
     const Point3m c = (f.cP(0) + f.cP(1) + f.cP(2)) / 3;
     if (vcg::Distance(c, center) > radius) continue;
     near.push_back(&f);
-    if (vcg::Distance(c, center) < radius / 2) view += vcg::TriangleNormal(f);
+    if (!view_given && vcg::Distance(c, center) < radius / 2) view += vcg::TriangleNormal(f);
   }
   view.Normalize();
   Point3m up = std::abs(view[1]) < 0.9 ? Point3m(0, 1, 0) : Point3m(1, 0, 0);
@@ -222,11 +223,13 @@ int main(int argc, char** argv) {
     if (cmd == "metrics" && argc == 5) return Metrics(argv[2], argv[3], argv[4]);
     if (cmd == "subdivide" && argc == 4) return Subdivide(argv[2], argv[3]);
     if (cmd == "append" && argc == 5) return Append(argv[2], argv[3], argv[4]);
-    if (cmd == "render" && argc == 8)
+    if (cmd == "render" && (argc == 8 || argc == 11))
       return Render(argv[2], argv[3], Point3m(std::stof(argv[4]), std::stof(argv[5]), std::stof(argv[6])),
-                    std::stod(argv[7]));
+                    std::stod(argv[7]),
+                    argc == 11 ? Point3m(std::stof(argv[8]), std::stof(argv[9]), std::stof(argv[10]))
+                               : Point3m(0, 0, 0));
     std::fprintf(stderr, "usage: bench_tools metrics GT INPUT RESULT | subdivide IN OUT | "
-                         "append A B OUT | render MESH OUT.png CX CY CZ RADIUS\n");
+                         "append A B OUT | render MESH OUT.png CX CY CZ RADIUS [VX VY VZ]\n");
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_tools: %s\n", e.what());
