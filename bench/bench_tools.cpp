@@ -85,7 +85,8 @@ void PrintStats(const char* name, const std::vector<double>& d, double diag) {
               100 * sum / n / diag, 100 * std::sqrt(sq / n) / diag);
 }
 
-int Metrics(const std::string& gt_path, const std::string& input_path, const std::string& result_path) {
+int Metrics(const std::string& gt_path, const std::string& input_path,
+            const std::string& result_path) {
   Surface gt(gt_path), input(input_path), result(result_path);
   const double diag = gt.m.bbox.Diag();
   const double tol = 1e-5 * diag;
@@ -129,7 +130,8 @@ int Subdivide(const std::string& in, const std::string& out) {
   };
   std::vector<std::array<int, 3>> tris;
   for (const auto& f : m.face) {
-    const int a = vcg::tri::Index(m, f.cV(0)), b = vcg::tri::Index(m, f.cV(1)), c = vcg::tri::Index(m, f.cV(2));
+    const int a = vcg::tri::Index(m, f.cV(0)), b = vcg::tri::Index(m, f.cV(1)),
+              c = vcg::tri::Index(m, f.cV(2));
     const int ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
     tris.push_back({a, ab, ca});
     tris.push_back({b, bc, ab});
@@ -224,10 +226,11 @@ int main(int argc, char** argv) {
     if (cmd == "subdivide" && argc == 4) return Subdivide(argv[2], argv[3]);
     if (cmd == "append" && argc == 5) return Append(argv[2], argv[3], argv[4]);
     if (cmd == "render" && (argc == 8 || argc == 11))
-      return Render(argv[2], argv[3], Point3m(std::stof(argv[4]), std::stof(argv[5]), std::stof(argv[6])),
-                    std::stod(argv[7]),
-                    argc == 11 ? Point3m(std::stof(argv[8]), std::stof(argv[9]), std::stof(argv[10]))
-                               : Point3m(0, 0, 0));
+      return Render(
+          argv[2], argv[3], Point3m(std::stof(argv[4]), std::stof(argv[5]), std::stof(argv[6])),
+          std::stod(argv[7]),
+          argc == 11 ? Point3m(std::stof(argv[8]), std::stof(argv[9]), std::stof(argv[10]))
+                     : Point3m(0, 0, 0));
     std::fprintf(stderr, "usage: bench_tools metrics GT INPUT RESULT | subdivide IN OUT | "
                          "append A B OUT | render MESH OUT.png CX CY CZ RADIUS [VX VY VZ]\n");
     return 2;

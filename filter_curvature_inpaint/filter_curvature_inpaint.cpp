@@ -7,11 +7,14 @@ FilterCurvatureInpaintPlugin::FilterCurvatureInpaintPlugin() {
   for (FilterIDType t : types()) actionList << new QAction(filterName(t), this);
 }
 
-QString FilterCurvatureInpaintPlugin::pluginName() const { return "FilterCurvatureInpaint"; }
+QString FilterCurvatureInpaintPlugin::pluginName() const {
+  return "FilterCurvatureInpaint";
+}
 
 QString FilterCurvatureInpaintPlugin::filterName(FilterIDType filter) const {
   switch (filter) {
-  case FP_COARSE_HOLE_FILL: return "Curvature Inpaint: Coarse Hole Fill";
+  case FP_COARSE_HOLE_FILL:
+    return "Curvature Inpaint: Coarse Hole Fill";
   }
   return {};
 }
@@ -34,7 +37,9 @@ MeshFilterInterface::FilterClass FilterCurvatureInpaintPlugin::getClass(QAction*
   return FilterClass(MeshFilterInterface::Remeshing + MeshFilterInterface::Cleaning);
 }
 
-int FilterCurvatureInpaintPlugin::getRequirements(QAction*) { return MeshModel::MM_NONE; }
+int FilterCurvatureInpaintPlugin::getRequirements(QAction*) {
+  return MeshModel::MM_NONE;
+}
 
 int FilterCurvatureInpaintPlugin::getPreConditions(QAction*) const {
   return MeshModel::MM_FACENUMBER;
@@ -77,20 +82,19 @@ void FilterCurvatureInpaintPlugin::initParameterSet(QAction* action, MeshModel&,
 }
 
 bool FilterCurvatureInpaintPlugin::applyFilter(QAction* action, MeshDocument& md,
-                                               const RichParameterList& par,
-                                               vcg::CallBackPos* cb) {
+                                               const RichParameterList& par, vcg::CallBackPos* cb) {
   if (md.mm() == nullptr) {
     errorMessage = "There is no mesh to fill.";
     return false;
   }
   switch (ID(action)) {
-  case FP_COARSE_HOLE_FILL: return applyCoarseHoleFill(*md.mm(), par, cb);
+  case FP_COARSE_HOLE_FILL:
+    return applyCoarseHoleFill(*md.mm(), par, cb);
   }
   return false;
 }
 
-bool FilterCurvatureInpaintPlugin::applyCoarseHoleFill(MeshModel& mm,
-                                                       const RichParameterList& par,
+bool FilterCurvatureInpaintPlugin::applyCoarseHoleFill(MeshModel& mm, const RichParameterList& par,
                                                        vcg::CallBackPos* cb) {
   vcg_ext::CoarseFillParams params;
   params.max_hole_edges = std::max(0, par.getInt("MaxHoleSize"));

@@ -58,8 +58,10 @@ int LoadMesh(const std::string& path, CMeshO& m) {
     vcg::tri::Clean<CMeshO>::RemoveDuplicateVertex(m);
     vcg::tri::Allocator<CMeshO>::CompactEveryVector(m);
   }
-  if (!(loaded & Mask::IOM_VERTNORMAL)) vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
-  else vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
+  if (!(loaded & Mask::IOM_VERTNORMAL))
+    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
+  else
+    vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
   vcg::tri::UpdateBounding<CMeshO>::Box(m);
   return loaded;
 }

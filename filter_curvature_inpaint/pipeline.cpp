@@ -24,9 +24,13 @@ std::vector<std::string> DescribeCoarseFill(const vcg_ext::CoarseFillResult& res
     new_vertices += int(r.new_vertices.size());
     new_faces += int(r.new_faces.size());
     if (r.filled) {
-      std::snprintf(buf, sizeof buf, "hole %zu: %d edges%s, %s, %zu new vertices, %zu faces, %s, %.1f ms%s%s",
-                    h + 1, r.boundary_edges, r.pinched ? " (pinched)" : "", r.triangulation.c_str(),
-                    r.new_vertices.size(), r.new_faces.size(), r.planar_cap ? "flat cap" : r.faired ? "faired" : "not faired",
+      std::snprintf(buf, sizeof buf,
+                    "hole %zu: %d edges%s, %s, %zu new vertices, %zu faces, %s, %.1f ms%s%s", h + 1,
+                    r.boundary_edges, r.pinched ? " (pinched)" : "", r.triangulation.c_str(),
+                    r.new_vertices.size(), r.new_faces.size(),
+                    r.planar_cap ? "flat cap"
+                    : r.faired   ? "faired"
+                                 : "not faired",
                     1000 * r.seconds, r.problem.empty() ? "" : ": ", r.problem.c_str());
     } else {
       std::snprintf(buf, sizeof buf, "hole %zu: %d edges%s, left open: %s", h + 1, r.boundary_edges,

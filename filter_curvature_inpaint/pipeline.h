@@ -23,7 +23,7 @@ std::vector<std::string> DescribeCoarseFill(const vcg_ext::CoarseFillResult& res
 struct HoleCensus {
   int vertices = 0;
   int faces = 0;
-  std::vector<int> loop_edges; ///< boundary edges of each loop, largest first
+  std::vector<int> loop_edges;   ///< boundary edges of each loop, largest first
   size_t non_manifold_edges = 0; ///< edges with three or more faces
   size_t inconsistent_edges = 0; ///< edges whose two faces disagree on orientation
 };

@@ -11,7 +11,8 @@ using test::Mesh;
 
 namespace {
 
-const vcg::Point3f kDirections[] = {{1, 0.2f, 0.1f}, {-0.3f, 1, 0.2f}, {0.1f, -0.2f, -1}, {-1, -1, 1}};
+const vcg::Point3f kDirections[] = {
+    {1, 0.2f, 0.1f}, {-0.3f, 1, 0.2f}, {0.1f, -0.2f, -1}, {-1, -1, 1}};
 
 double MaxRadiusError(const Mesh& m, const vcg_ext::CoarseFillResult& r, float radius) {
   double worst = 0;
@@ -161,7 +162,8 @@ TEST(CoarseFill, ClosedMeshComesBackUnchanged) {
   for (size_t i = 0; i < m.vert.size(); ++i) EXPECT_EQ(m.vert[i].cP(), original.vert[i].cP());
   for (size_t i = 0; i < m.face.size(); ++i)
     for (int k = 0; k < 3; ++k)
-      EXPECT_EQ(vcg::tri::Index(m, m.face[i].cV(k)), vcg::tri::Index(original, original.face[i].cV(k)));
+      EXPECT_EQ(vcg::tri::Index(m, m.face[i].cV(k)),
+                vcg::tri::Index(original, original.face[i].cV(k)));
 }
 
 TEST(CoarseFill, ExistingVerticesAndAttributesAreKept) {
@@ -234,7 +236,8 @@ void MakeOpenPrism(Mesh& m, int sides, int rings) {
   for (int r = 0; r <= rings; ++r)
     for (int s = 0; s < sides; ++s) {
       const double a = 2 * M_PI * s / sides;
-      m.vert[r * sides + s].P() = vcg::Point3f(float(std::cos(a)), float(std::sin(a)), h * r / rings);
+      m.vert[r * sides + s].P() =
+          vcg::Point3f(float(std::cos(a)), float(std::sin(a)), h * r / rings);
     }
   m.vert.back().P() = vcg::Point3f(0, 0, h); // top centre
   (void)vi;

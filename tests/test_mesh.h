@@ -11,13 +11,12 @@ namespace test {
 
 class Vertex;
 class Face;
-struct Types
-    : public vcg::UsedTypes<vcg::Use<Vertex>::AsVertexType, vcg::Use<Face>::AsFaceType> {};
-class Vertex : public vcg::Vertex<Types, vcg::vertex::Coord3f, vcg::vertex::Normal3f,
-                                  vcg::vertex::Color4b, vcg::vertex::Qualityf,
-                                  vcg::vertex::BitFlags> {};
-class Face : public vcg::Face<Types, vcg::face::VertexRef, vcg::face::Normal3f,
-                              vcg::face::BitFlags> {};
+struct Types : public vcg::UsedTypes<vcg::Use<Vertex>::AsVertexType, vcg::Use<Face>::AsFaceType> {};
+class Vertex
+    : public vcg::Vertex<Types, vcg::vertex::Coord3f, vcg::vertex::Normal3f, vcg::vertex::Color4b,
+                         vcg::vertex::Qualityf, vcg::vertex::BitFlags> {};
+class Face
+    : public vcg::Face<Types, vcg::face::VertexRef, vcg::face::Normal3f, vcg::face::BitFlags> {};
 class Mesh : public vcg::tri::TriMesh<std::vector<Vertex>, std::vector<Face>> {};
 
 /// Icosphere of radius `r` (4 subdivisions: 2562 vertices).

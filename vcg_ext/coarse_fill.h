@@ -25,27 +25,27 @@
 namespace vcg_ext {
 
 struct CoarseFillParams {
-  int max_hole_edges = 0;         ///< holes with more boundary edges stay open; 0 = fill all
-  bool selected_only = false;     ///< fill only holes with a selected face on their border
-  int dp_max_edges = 200;         ///< larger loops use vcglib's ears instead of Liepa's O(n^3) DP
-  bool refine = true;             ///< match the surrounding edge density
+  int max_hole_edges = 0;     ///< holes with more boundary edges stay open; 0 = fill all
+  bool selected_only = false; ///< fill only holes with a selected face on their border
+  int dp_max_edges = 200;     ///< larger loops use vcglib's ears instead of Liepa's O(n^3) DP
+  bool refine = true;         ///< match the surrounding edge density
   double density_alpha = 1.41421356; ///< Liepa's alpha: larger gives a denser fill
-  bool fair = true;               ///< bi-Laplacian fairing of the inserted vertices
+  bool fair = true;                  ///< bi-Laplacian fairing of the inserted vertices
   /// A planar loop whose surroundings meet its plane at a crease (the cut bottom of a statue,
   /// a window) is closed by a flat membrane instead of a thin plate, which would bulge to
   /// continue the walls around it.
   bool flat_planar_caps = true;
-  bool select_new_faces = true;   ///< replace the face selection with the new faces
+  bool select_new_faces = true; ///< replace the face selection with the new faces
 };
 
 struct HoleFillReport {
   int boundary_edges = 0;
-  bool pinched = false;      ///< the loop was split at a non-manifold vertex
+  bool pinched = false; ///< the loop was split at a non-manifold vertex
   bool filled = false;
   std::string triangulation; ///< "liepa-dp" or "vcg-ears"
   bool faired = false;
-  bool planar_cap = false;   ///< closed flat (IsPlanarCap) rather than as a thin plate
-  std::string problem;       ///< why the hole stayed open or was not faired; empty if none
+  bool planar_cap = false; ///< closed flat (IsPlanarCap) rather than as a thin plate
+  std::string problem;     ///< why the hole stayed open or was not faired; empty if none
   double seconds = 0;
   std::vector<int> loop;         ///< the loop's vertex indices in the mesh
   std::vector<int> new_vertices; ///< indices in m.vert of the vertices added for this hole
@@ -152,7 +152,8 @@ inline bool IsPlanarCap(const std::vector<Eigen::Vector3d>& points,
   Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
   Eigen::AlignedBox3d box;
   for (const auto& p : points) cov += (p - centre) * (p - centre).transpose(), box.extend(p);
-  const Eigen::Vector3d normal = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvectors().col(0);
+  const Eigen::Vector3d normal =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvectors().col(0);
   double off_plane = 0, alignment = 0;
   for (const auto& p : points) off_plane = std::max(off_plane, std::abs((p - centre).dot(normal)));
   for (const auto& n : side_normals) alignment += std::abs(n.dot(normal));
@@ -186,7 +187,8 @@ inline HolePatch FillOneHole(const std::vector<Eigen::Vector3d>& loop_points,
 
   // A planar cap ends up flat whatever its initial triangulation (the benchmark's falcon
   // bottom: the same distances either way), so it takes the fast ears.
-  report.planar_cap = params.fair && params.flat_planar_caps && IsPlanarCap(loop_points, collar.side_normals);
+  report.planar_cap =
+      params.fair && params.flat_planar_caps && IsPlanarCap(loop_points, collar.side_normals);
   HoleTriangulationParams tp;
   tp.dp_max_edges = report.planar_cap ? 0 : params.dp_max_edges;
   HoleTriangulation tri =
@@ -351,7 +353,8 @@ CoarseFillResult CoarseFill(MeshType& m, const CoarseFillParams& params = {},
         chords.insert(mine.begin(), mine.end());
       }
     }
-    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    report.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (cb) {
       const std::string msg = "Coarse fill: hole " + std::to_string(h + 1) + " of " +
                               std::to_string(count) + " (" + std::to_string(loop.EdgeCount()) +

@@ -59,8 +59,8 @@ EdgeCensus CensusEdges(const MeshType& m) {
     const size_t count = j - i;
     if (count == 1) {
       const Entry& e = entries[i];
-      census.boundary.push_back(
-          e.forward ? HalfEdge{e.lo, e.hi, e.face} : HalfEdge{e.hi, e.lo, e.face});
+      census.boundary.push_back(e.forward ? HalfEdge{e.lo, e.hi, e.face}
+                                          : HalfEdge{e.hi, e.lo, e.face});
     } else if (count == 2) {
       if (entries[i].forward == entries[i + 1].forward) ++census.inconsistent_edges;
     } else {

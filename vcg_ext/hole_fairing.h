@@ -46,7 +46,8 @@ inline double ClampedCot(const Eigen::Vector3d& at, const Eigen::Vector3d& a,
 /// compressed rows, refilled for new positions without reallocating.
 class CotanLaplacian {
 public:
-  CotanLaplacian(int n, const std::vector<std::array<int, 3>>& tris) : tris_(tris), start_(n + 1, 0) {
+  CotanLaplacian(int n, const std::vector<std::array<int, 3>>& tris)
+      : tris_(tris), start_(n + 1, 0) {
     std::vector<std::vector<int>> adj(n);
     for (const auto& t : tris)
       for (int k = 0; k < 3; ++k) {

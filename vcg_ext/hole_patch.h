@@ -16,7 +16,9 @@ namespace vcg_ext {
 
 using LocalEdge = std::pair<int, int>; ///< (smaller, larger) local vertex indices
 
-inline LocalEdge MakeLocalEdge(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
+inline LocalEdge MakeLocalEdge(int a, int b) {
+  return {std::min(a, b), std::max(a, b)};
+}
 
 struct HolePatch {
   /// Local vertices [0, boundary_count) are the hole's loop vertices in loop order; the rest

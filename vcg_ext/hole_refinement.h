@@ -59,7 +59,7 @@ public:
         if (Vertex(Next(c)) == b || Vertex(Prev(c)) == b) return true;
         // Rotate around a: across the edge entering a (dir 0) or leaving a (dir 1).
         const int o = dir == 0 ? opposite_[Prev(c)] : opposite_[c];
-        if (o < 0) break;           // reached the loop: walk the other way round
+        if (o < 0) break; // reached the loop: walk the other way round
         c = dir == 0 ? o : Next(o);
         if (c == start) return false; // a closed fan, walked completely
       }
@@ -146,8 +146,8 @@ inline int RelaxEdges(HolePatch& patch, PatchTopology& topo, std::vector<int>& s
     const bool forced = patch.forbidden_edges.count(MakeLocalEdge(a, b)) > 0;
     if (!forced && Angle(P[c], P[a], P[b]) + Angle(P[d], P[a], P[b]) <= M_PI + 1e-9) continue;
     if (c == d || patch.forbidden_edges.count(MakeLocalEdge(c, d)) || topo.HasEdge(c, d)) continue;
-    const Eigen::Vector3d n_old =
-        TriangleNormal(P[a], P[b], P[c]).normalized() + TriangleNormal(P[b], P[a], P[d]).normalized();
+    const Eigen::Vector3d n_old = TriangleNormal(P[a], P[b], P[c]).normalized() +
+                                  TriangleNormal(P[b], P[a], P[d]).normalized();
     if (TriangleNormal(P[a], P[d], P[c]).dot(n_old) <= 0 ||
         TriangleNormal(P[b], P[c], P[d]).dot(n_old) <= 0)
       continue;

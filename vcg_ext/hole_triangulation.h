@@ -98,7 +98,8 @@ inline HoleTriangulation LiepaTriangulation(const std::vector<Eigen::Vector3d>& 
         const double len_nt = nt.norm();
         double c = std::min(cosine(across(i, k), nt, len_nt), cosine(across(k, j), nt, len_nt));
         if (!chord) c = std::min(c, cosine(side_normals[n - 1], nt, len_nt));
-        const DpWeight cand{std::min({c, a.cos_worst, b.cos_worst}), a.area + b.area + 0.5 * len_nt};
+        const DpWeight cand{std::min({c, a.cos_worst, b.cos_worst}),
+                            a.area + b.area + 0.5 * len_nt};
         if (best_k < 0 || cand.BetterThan(best_w)) {
           best_w = cand;
           best_k = k;
@@ -130,8 +131,8 @@ inline HoleTriangulation LiepaTriangulation(const std::vector<Eigen::Vector3d>& 
 // triangles. The annulus is manifold even where the real mesh is pinched.
 class EarVertex;
 class EarFace;
-struct EarTypes : public vcg::UsedTypes<vcg::Use<EarVertex>::AsVertexType,
-                                        vcg::Use<EarFace>::AsFaceType> {};
+struct EarTypes
+    : public vcg::UsedTypes<vcg::Use<EarVertex>::AsVertexType, vcg::Use<EarFace>::AsFaceType> {};
 class EarVertex : public vcg::Vertex<EarTypes, vcg::vertex::Coord3d, vcg::vertex::Normal3d,
                                      vcg::vertex::BitFlags> {};
 class EarFace : public vcg::Face<EarTypes, vcg::face::VertexRef, vcg::face::Normal3d,

@@ -62,7 +62,8 @@ public:
     if (v.empty()) return fallback;
     char* end = nullptr;
     const long x = std::strtol(v.c_str(), &end, 10);
-    if (*end != '\0' || x < lo) throw UsageError(name + " needs an integer >= " + std::to_string(lo));
+    if (*end != '\0' || x < lo)
+      throw UsageError(name + " needs an integer >= " + std::to_string(lo));
     return x;
   }
   double Real(const std::string& name) {
