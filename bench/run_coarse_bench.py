@@ -116,6 +116,13 @@ def dist(m):
     return f"{a['max']:.2f} / {a['rms']:.3f} | {b['max']:.2f} / {b['rms']:.3f}"
 
 
+def table(title, header, rows):
+    print(f"\n{title}\n")
+    print("| " + " | ".join(header) + " |")
+    print("|" + "---|" * len(header))
+    print("\n".join(rows))
+
+
 def main():
     build()
     tmp = tempfile.mkdtemp(prefix="coarse-bench-")
@@ -168,22 +175,18 @@ def main():
             m_wall = meshlab(server, script, inp, os.path.join(tmp, "scale_meshlab.ply"))
             scale.append(f"| {label} | {faces:,} | {'+'.join(edges)} | {o_fill:.1f} | {c_fill:.1f} | {o_wall:.2f} | {c_wall:.2f} | {m_wall:.2f} |")
 
-        print("Quality: distance on the hole, % of the bounding-box diagonal, max / RMS\n")
-        print("| case | hole edges | filler | ground truth → fill | fill → ground truth | normal deviation (°) | holes left |")
-        print("|---|---|---|---|---|---|---|")
-        print("\n".join(quality))
-        print("\nSpeed: median of 3 runs\n")
-        print("| case | ours: fill ms (triangulation) | CGAL: fill ms | ours: process s | CGAL: process s | Close Holes (meshlabserver): process s |")
-        print("|---|---|---|---|---|---|")
-        print("\n".join(speed))
-        print("\nTriangulation: Liepa's dynamic programme against vcglib's ears (both refined and faired)\n")
-        print("| case | Liepa DP: gt → fill / fill → gt | ms | vcglib ears: gt → fill / fill → gt | ms |")
-        print("|---|---|---|---|---|")
-        print("\n".join(triang))
-        print("\nScale: the same hole in a mesh 17 times larger\n")
-        print("| mesh | faces | hole edges | ours: fill ms | CGAL: fill ms | ours: process s | CGAL: process s | Close Holes: process s |")
-        print("|---|---|---|---|---|---|---|---|")
-        print("\n".join(scale))
+        table("Quality: distance on the hole, % of the bounding-box diagonal, max / RMS",
+              ["case", "hole edges", "filler", "ground truth → fill", "fill → ground truth",
+               "normal deviation (°)", "holes left"], quality)
+        table("Speed: median of 3 runs",
+              ["case", "ours: fill ms (triangulation)", "CGAL: fill ms", "ours: process s",
+               "CGAL: process s", "Close Holes (meshlabserver): process s"], speed)
+        table("Triangulation: Liepa's dynamic programme against vcglib's ears (both refined and faired)",
+              ["case", "Liepa DP: gt → fill / fill → gt", "ms", "vcglib ears: gt → fill / fill → gt", "ms"],
+              triang)
+        table("Scale: the same hole in a mesh 17 times larger",
+              ["mesh", "faces", "hole edges", "ours: fill ms", "CGAL: fill ms", "ours: process s",
+               "CGAL: process s", "Close Holes: process s"], scale)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 

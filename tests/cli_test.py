@@ -3,7 +3,8 @@ import math
 import os
 import unittest
 
-from support import SHARED_MESHES, TOOL, TempDirTest, grid, info, run, sha256, write_ascii_ply
+from support import (SHARED_MESHES, TOOL, TempDirTest, grid, info, run, sha256, write_ascii_ply,
+                     write_non_manifold_ply)
 
 
 class CoarseFill(TempDirTest):
@@ -98,11 +99,7 @@ class BadInput(TempDirTest):
         self.assert_refused(src, ["non-finite"])
 
     def test_non_manifold_edge(self):
-        v, f = grid(4)
-        v.append((0.3, 0.3, 1.0))
-        f.append((6, 7, len(v) - 1))
-        src = self.path("nonmanifold.ply")
-        write_ascii_ply(src, v, f)
+        src = write_non_manifold_ply(self.path("nonmanifold.ply"))
         self.assert_refused(src, ["more than two faces"])
 
     def test_missing_file_and_unknown_format(self):

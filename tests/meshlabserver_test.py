@@ -3,7 +3,7 @@ import glob
 import os
 import unittest
 
-from support import SCRIPTS, TempDirTest, grid, info, make_meshlab_prefix, run, sha256, write_ascii_ply
+from support import SCRIPTS, TempDirTest, info, make_meshlab_prefix, run, sha256, write_non_manifold_ply
 
 
 class MeshlabServer(TempDirTest):
@@ -31,11 +31,7 @@ class MeshlabServer(TempDirTest):
                 self.assertEqual(after["non_manifold_edges"], 0)
 
     def test_refused_mesh_is_reported_and_not_written(self):
-        v, f = grid(4)
-        v.append((0.3, 0.3, 1.0))
-        f.append((6, 7, len(v) - 1))
-        src = self.path("nonmanifold.ply")
-        write_ascii_ply(src, v, f)
+        src = write_non_manifold_ply(self.path("nonmanifold.ply"))
         digest = sha256(src)
         out = self.path("out.ply")
         r = self.meshlabserver(src, out, os.path.join(SCRIPTS, "curvature_inpaint_coarse_hole_fill.mlx"))

@@ -58,6 +58,15 @@ def grid(n):
     return vertices, faces
 
 
+def write_non_manifold_ply(path):
+    """A small grid with a third face on one of its edges."""
+    v, f = grid(4)
+    v.append((0.3, 0.3, 1.0))
+    f.append((6, 7, len(v) - 1))
+    write_ascii_ply(path, v, f)
+    return path
+
+
 def make_meshlab_prefix(root):
     """A private MeshLab prefix whose meshlabserver loads the built plugin (no root needed)."""
     lib = os.path.join(root, "lib", "x86_64-linux-gnu", "meshlab")
