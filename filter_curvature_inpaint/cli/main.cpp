@@ -1,9 +1,11 @@
 // curvature-inpaint: the command-line front end of the pipeline.
+#include "curvature_images.h"
 #include "mesh_io.h"
 #include "pipeline.h"
 
 #include <vcg_ext/punch_hole.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -20,6 +22,13 @@ const char* const kUsage =
     "      write OUT. Formats: .ply .off .obj .stl. N = 0 (default) fills holes of any size.\n"
     "      Holes up to M edges (default 200) get the optimal triangulation, larger ones\n"
     "      vcglib's ear cutting. --selected-only fills holes beside selected faces (PLY).\n"
+    "  curvature-inpaint images IN DIR [--size N] [--max-hole-edges N] [--context C]\n"
+    "                                  [--filter-scale S]\n"
+    "      Fill the holes of IN, then write for every hole its curvature image\n"
+    "      (hole_<k>_curvature.png), the same with the hole transparent (hole_<k>_rgba.png),\n"
+    "      the hole's mask (hole_<k>_mask.png, white = hole), hole_<k>.json (patch, UV,\n"
+    "      normalization), and montage.png with all of them. N: pixels (default 1024); C:\n"
+    "      context ring width in hole radii (default 1); S: APSS filter scale (default 4).\n"
     "  curvature-inpaint info IN\n"
     "      Print the vertex, face and hole counts of IN (boundary edges of each hole).\n"
     "  curvature-inpaint punch IN OUT --seed-vertex V --radius-frac R\n"
@@ -66,13 +75,7 @@ public:
       throw UsageError(name + " needs an integer >= " + std::to_string(lo));
     return x;
   }
-  double Real(const std::string& name) {
-    const std::string v = Option(name, "");
-    char* end = nullptr;
-    const double x = std::strtod(v.c_str(), &end);
-    if (v.empty() || *end != '\0' || !(x > 0)) throw UsageError(name + " needs a positive number");
-    return x;
-  }
+  double Real(const std::string& name);
   std::vector<std::string> Positional(size_t count) {
     for (const auto& a : args_)
       if (a.size() > 1 && a[0] == '-') throw UsageError("unknown option " + a);
@@ -84,6 +87,14 @@ public:
 private:
   std::vector<std::string> args_;
 };
+
+double ParsePositive(const std::string& name, const std::string& v) {
+  char* end = nullptr;
+  const double x = std::strtod(v.c_str(), &end);
+  if (v.empty() || *end != '\0' || !(x > 0) || !std::isfinite(x))
+    throw UsageError(name + " needs a positive number");
+  return x;
+}
 
 bool ProgressToStderr(const int, const char* message) {
   std::fprintf(stderr, "%s\n", message);
@@ -104,6 +115,25 @@ int Coarse(Args& args) {
   for (const auto& line : curvature_inpaint::DescribeCoarseFill(result))
     std::fprintf(stderr, "%s\n", line.c_str());
   curvature_inpaint::SaveMesh(files[1], m, mask);
+  return 0;
+}
+
+int Images(Args& args) {
+  curvature_inpaint::CurvatureImagesParams params;
+  params.image_size = int(args.Integer("--size", params.image_size, 16));
+  params.coarse.max_hole_edges = int(args.Integer("--max-hole-edges", 0, 0));
+  const std::string context = args.Option("--context", "");
+  if (!context.empty()) params.segmentation.context = ParsePositive("--context", context);
+  const std::string scale = args.Option("--filter-scale", "");
+  if (!scale.empty()) params.apss.filter_scale = float(ParsePositive("--filter-scale", scale));
+  const auto files = args.Positional(2);
+  CMeshO m;
+  curvature_inpaint::LoadMesh(files[0], m);
+  const auto result = curvature_inpaint::ComputeCurvatureImages(m, params, ProgressToStderr);
+  for (const auto& line : curvature_inpaint::DescribeCurvatureImages(result))
+    std::fprintf(stderr, "%s\n", line.c_str());
+  curvature_inpaint::WriteHoleImages(files[1], result);
+  curvature_inpaint::WriteMontage(files[1] + "/montage.png", result);
   return 0;
 }
 
@@ -136,6 +166,10 @@ int Punch(Args& args) {
   return 0;
 }
 
+double Args::Real(const std::string& name) {
+  return ParsePositive(name, Option(name, ""));
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -143,6 +177,7 @@ int main(int argc, char** argv) {
   try {
     const std::string command = args.Command();
     if (command == "coarse") return Coarse(args);
+    if (command == "images") return Images(args);
     if (command == "info") return Info(args);
     if (command == "punch") return Punch(args);
     if (command == "-h" || command == "--help" || command == "help") {

@@ -1,0 +1,270 @@
+#include "curvature_images.h"
+
+#include "pipeline.h"
+
+#include <QColor>
+#include <QDir>
+#include <QImage>
+#include <QPainter>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace curvature_inpaint {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double Percentile(std::vector<double> v, double q) {
+  if (v.empty()) return 0;
+  const size_t k = std::min(v.size() - 1, size_t(q * (v.size() - 1) + 0.5));
+  std::nth_element(v.begin(), v.begin() + k, v.end());
+  return v[k];
+}
+
+/// The patch's vertices first, then `rings` rings around them, with area-weighted normals
+/// from their faces: the point set the APSS fits run on.
+void ApssNeighbourhood(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vcg_ext::UnitBox& box,
+                       const std::vector<int>& patch_vertices, int rings,
+                       std::vector<Eigen::Vector3d>& points,
+                       std::vector<Eigen::Vector3d>& normals) {
+  std::vector<int> order(patch_vertices);
+  std::unordered_set<int> in(order.begin(), order.end());
+  size_t ring_start = 0;
+  for (int r = 0; r < rings; ++r) {
+    const size_t ring_end = order.size();
+    for (size_t i = ring_start; i < ring_end; ++i)
+      vf.ForEach(order[i], [&](int f) {
+        for (int k = 0; k < 3; ++k) {
+          const int v = int(vcg::tri::Index(m, m.face[f].cV(k)));
+          if (in.insert(v).second) order.push_back(v);
+        }
+      });
+    ring_start = ring_end;
+  }
+  points.clear();
+  normals.clear();
+  for (int v : order) {
+    points.push_back(box.ToUnit(m.vert[v].cP()));
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    vf.ForEach(v, [&](int f) {
+      const auto& face = m.face[f];
+      n += vcg_ext::TriangleNormal(box.ToUnit(face.cV(0)->cP()), box.ToUnit(face.cV(1)->cP()),
+                                   box.ToUnit(face.cV(2)->cP()));
+    });
+    normals.push_back(n.norm() > 0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d(0, 0, 1));
+  }
+}
+
+void BuildHoleImage(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vcg_ext::UnitBox& box,
+                    const vcg_ext::HoleRegion& region, const CurvatureImagesParams& params,
+                    HoleImage& out) {
+  out.rings = region.rings;
+  out.target_rings = region.target_rings;
+  out.patch = vcg_ext::ExtractPatch(m, region, box);
+  if (!out.patch.IsDisk()) {
+    out.problem = "its patch is not a disk (Euler characteristic " +
+                  std::to_string(out.patch.euler) + ", " +
+                  std::to_string(out.patch.boundary_loops) + " boundary loops)";
+    return;
+  }
+  std::vector<Eigen::Vector3d> points, normals;
+  ApssNeighbourhood(m, vf, box, out.patch.vertices, params.apss_rings, points, normals);
+  std::vector<int> query(out.patch.vertices.size());
+  for (size_t i = 0; i < query.size(); ++i) query[i] = int(i);
+  out.curvature = vcg_ext::ApssMeanCurvature(points, normals, query, params.apss);
+
+  // Normalize by the known ring: the vertices not inside the hole's fill.
+  std::vector<char> inside(out.patch.points.size(), 1);
+  for (size_t f = 0; f < out.patch.triangles.size(); ++f)
+    if (!out.patch.is_fill[f])
+      for (int v : out.patch.triangles[f]) inside[v] = 0;
+  std::vector<double> known;
+  for (size_t v = 0; v < out.curvature.size(); ++v)
+    if (!inside[v] && std::isfinite(out.curvature[v])) known.push_back(out.curvature[v]);
+  out.low = Percentile(known, params.low_percentile);
+  out.high = Percentile(known, params.high_percentile);
+  out.scale = std::max({std::abs(out.low), std::abs(out.high), 1e-9});
+  out.value.resize(out.curvature.size());
+  for (size_t v = 0; v < out.curvature.size(); ++v)
+    out.value[v] = std::isfinite(out.curvature[v])
+                       ? std::max(0.0, std::min(1.0, 0.5 + 0.5 * out.curvature[v] / out.scale))
+                       : 0.5;
+
+  out.uv = vcg_ext::ParameterizeMvc(out.patch.points, out.patch.triangles, out.patch.boundary);
+  if (!out.uv.solved || out.uv.flipped > 0) {
+    out.problem =
+        "its parameterization failed (" + std::to_string(out.uv.flipped) + " flipped triangles)";
+    return;
+  }
+  out.image = vcg_ext::RasterizeCurvature(out.uv.uv, out.value, out.patch.triangles,
+                                          out.patch.is_fill, params.image_size);
+}
+
+} // namespace
+
+CurvatureImagesResult ComputeCurvatureImages(CMeshO& m, const CurvatureImagesParams& params,
+                                             vcg::CallBackPos* cb) {
+  CurvatureImagesResult result;
+  const size_t vn = m.vert.size(), fn = m.face.size();
+  std::vector<char> selected(fn);
+  for (size_t f = 0; f < fn; ++f) selected[f] = m.face[f].IsS();
+  result.coarse = CoarseFill(m, params.coarse, cb);
+  try {
+    const auto start = Clock::now();
+    const vcg_ext::VertexFaces vf(m);
+    result.adjacency_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    std::vector<vcg_ext::FilledHole> filled;
+    std::vector<int> index;
+    for (size_t h = 0; h < result.coarse.holes.size(); ++h)
+      if (result.coarse.holes[h].filled) {
+        filled.push_back({result.coarse.holes[h].loop, result.coarse.holes[h].new_faces});
+        index.push_back(int(h));
+      }
+    const auto seg_start = Clock::now();
+    const auto regions =
+        vcg_ext::SegmentHolePatches(m, vf, filled, result.coarse.box, params.segmentation);
+    const double seg_each = std::chrono::duration<double>(Clock::now() - seg_start).count() /
+                            std::max<size_t>(filled.size(), 1);
+    result.holes.resize(filled.size());
+    for (size_t i = 0; i < filled.size(); ++i) {
+      const auto t0 = Clock::now();
+      HoleImage& hi = result.holes[i];
+      hi.hole = index[i];
+      BuildHoleImage(m, vf, result.coarse.box, regions[i], params, hi);
+      hi.seconds = seg_each + std::chrono::duration<double>(Clock::now() - t0).count();
+      if (cb) {
+        const std::string msg = "Curvature images: hole " + std::to_string(i + 1) + " of " +
+                                std::to_string(filled.size());
+        if (!cb(int(100.0 * (i + 1) / filled.size()), msg.c_str())) throw vcg_ext::CancelledError();
+      }
+    }
+  } catch (...) {
+    // Take the coarse fill back out: it only appended vertices and faces.
+    for (size_t f = fn; f < m.face.size(); ++f)
+      if (!m.face[f].IsD()) vcg::tri::Allocator<CMeshO>::DeleteFace(m, m.face[f]);
+    for (size_t v = vn; v < m.vert.size(); ++v)
+      if (!m.vert[v].IsD()) vcg::tri::Allocator<CMeshO>::DeleteVertex(m, m.vert[v]);
+    vcg::tri::Allocator<CMeshO>::CompactEveryVector(m);
+    for (size_t f = 0; f < fn; ++f) selected[f] ? m.face[f].SetS() : m.face[f].ClearS();
+    vcg::tri::UpdateBounding<CMeshO>::Box(m);
+    throw;
+  }
+  for (const HoleImage& hi : result.holes) {
+    if (!hi.problem.empty()) continue;
+    for (size_t v = 0; v < hi.patch.vertices.size(); ++v) {
+      const vcg_ext::Rgb8 c = vcg_ext::CurvatureColormap::Color8(hi.value[v]);
+      m.vert[hi.patch.vertices[v]].C() = vcg::Color4b(c.r, c.g, c.b, 255);
+    }
+  }
+  return result;
+}
+
+namespace {
+
+QImage ToQImage(const vcg_ext::CurvatureImage& img, bool with_alpha) {
+  QImage q(img.size, img.size, with_alpha ? QImage::Format_ARGB32 : QImage::Format_RGB32);
+  for (int y = 0; y < img.size; ++y)
+    for (int x = 0; x < img.size; ++x) {
+      const size_t i = size_t(y) * img.size + x;
+      const uint8_t* c = &img.rgb[i * 3];
+      q.setPixel(x, y, qRgba(c[0], c[1], c[2], with_alpha && img.hole[i] ? 0 : 255));
+    }
+  return q;
+}
+
+QImage MaskImage(const vcg_ext::CurvatureImage& img) {
+  QImage q(img.size, img.size, QImage::Format_Grayscale8);
+  for (int y = 0; y < img.size; ++y)
+    for (int x = 0; x < img.size; ++x)
+      q.setPixel(x, y, img.hole[size_t(y) * img.size + x] ? qRgb(255, 255, 255) : qRgb(0, 0, 0));
+  return q;
+}
+
+void Save(const QImage& image, const std::string& path) {
+  if (!image.save(QString::fromStdString(path), "PNG"))
+    throw std::runtime_error("cannot write " + path);
+}
+
+} // namespace
+
+void WriteHoleImages(const std::string& dir, const CurvatureImagesResult& result) {
+  if (!QDir().mkpath(QString::fromStdString(dir))) throw std::runtime_error("cannot create " + dir);
+  for (size_t k = 0; k < result.holes.size(); ++k) {
+    const HoleImage& hi = result.holes[k];
+    if (!hi.problem.empty()) continue;
+    const std::string base = dir + "/hole_" + std::to_string(k + 1);
+    Save(ToQImage(hi.image, false), base + "_curvature.png");
+    Save(ToQImage(hi.image, true), base + "_rgba.png");
+    Save(MaskImage(hi.image), base + "_mask.png");
+    std::ofstream json(base + ".json");
+    json.precision(9);
+    json << "{\n  \"hole\": " << k + 1
+         << ",\n  \"boundary_edges\": " << result.coarse.holes[hi.hole].boundary_edges
+         << ",\n  \"patch_vertices\": " << hi.patch.vertices.size()
+         << ",\n  \"patch_faces\": " << hi.patch.triangles.size() << ",\n  \"rings\": " << hi.rings
+         << ",\n  \"image_size\": " << hi.image.size
+         << ",\n  \"normalization\": {\"unit_box_scale\": " << result.coarse.box.scale
+         << ", \"curvature_low\": " << hi.low << ", \"curvature_high\": " << hi.high
+         << ", \"curvature_scale\": " << hi.scale
+         << ", \"value\": \"0.5 + 0.5 * curvature / curvature_scale, clamped to [0, 1]\"},\n"
+         << "  \"vertices\": [";
+    for (size_t v = 0; v < hi.patch.vertices.size(); ++v)
+      json << (v ? ",\n    " : "\n    ") << "{\"index\": " << hi.patch.vertices[v]
+           << ", \"u\": " << hi.uv.uv[v].x() << ", \"v\": " << hi.uv.uv[v].y()
+           << ", \"curvature\": " << (std::isfinite(hi.curvature[v]) ? hi.curvature[v] : 0.0)
+           << ", \"value\": " << hi.value[v] << "}";
+    json << "\n  ]\n}\n";
+    if (!json) throw std::runtime_error("cannot write " + base + ".json");
+  }
+}
+
+void WriteMontage(const std::string& path, const CurvatureImagesResult& result) {
+  const int cell = 256, pad = 8;
+  int rows = 0;
+  for (const auto& hi : result.holes) rows += hi.problem.empty();
+  QImage montage(3 * cell + 4 * pad, std::max(1, rows) * (cell + pad) + pad, QImage::Format_RGB32);
+  montage.fill(QColor(40, 40, 48));
+  QPainter painter(&montage);
+  int row = 0;
+  for (const auto& hi : result.holes) {
+    if (!hi.problem.empty()) continue;
+    const int y = pad + row++ * (cell + pad);
+    QImage checker(cell, cell, QImage::Format_RGB32);
+    for (int j = 0; j < cell; ++j)
+      for (int i = 0; i < cell; ++i)
+        checker.setPixel(i, j, ((i / 16 + j / 16) % 2) ? qRgb(200, 200, 200) : qRgb(150, 150, 150));
+    painter.drawImage(QRect(pad, y, cell, cell), ToQImage(hi.image, false));
+    painter.drawImage(QRect(2 * pad + cell, y, cell, cell), checker);
+    painter.drawImage(QRect(2 * pad + cell, y, cell, cell), ToQImage(hi.image, true));
+    painter.drawImage(QRect(3 * pad + 2 * cell, y, cell, cell), MaskImage(hi.image));
+  }
+  painter.end();
+  Save(montage, path);
+}
+
+std::vector<std::string> DescribeCurvatureImages(const CurvatureImagesResult& result) {
+  std::vector<std::string> lines = DescribeCoarseFill(result.coarse);
+  char buf[512];
+  for (size_t k = 0; k < result.holes.size(); ++k) {
+    const HoleImage& hi = result.holes[k];
+    if (!hi.problem.empty())
+      std::snprintf(buf, sizeof buf, "image %zu: none: %s", k + 1, hi.problem.c_str());
+    else
+      std::snprintf(buf, sizeof buf,
+                    "image %zu: patch of %zu vertices (%d of %d rings), curvature %.3g..%.3g, "
+                    "%d hole pixels of %d^2, %.0f ms",
+                    k + 1, hi.patch.vertices.size(), hi.rings, hi.target_rings, hi.low, hi.high,
+                    hi.image.HolePixels(), hi.image.size, 1000 * hi.seconds);
+    lines.emplace_back(buf);
+  }
+  return lines;
+}
+
+} // namespace curvature_inpaint

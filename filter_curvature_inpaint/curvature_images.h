@@ -1,0 +1,64 @@
+// Stages 3-7 of the pipeline on a MeshLab mesh: per hole, the disk patch around its coarse
+// fill, the patch's APSS mean curvature, its mean-value parameterization and its curvature
+// image with the hole's mask: what an inpainter is given.
+#pragma once
+
+#include <common/ml_mesh_type.h>
+#include <vcg_ext/apss_curvature.h>
+#include <vcg_ext/coarse_fill.h>
+#include <vcg_ext/curvature_image.h>
+#include <vcg_ext/mvc_parameterization.h>
+#include <vcg_ext/patch_extraction.h>
+
+#include <string>
+#include <vector>
+
+namespace curvature_inpaint {
+
+struct CurvatureImagesParams {
+  vcg_ext::CoarseFillParams coarse;
+  vcg_ext::HoleSegmentationParams segmentation;
+  vcg_ext::ApssParams apss;
+  int image_size = 1024; ///< pixels per side (DALL-E 2: 1024, Stable Diffusion: 512)
+  int apss_rings = 3;    ///< rings of vertices beyond the patch that support the fits
+  double low_percentile = 0.05, high_percentile = 0.95; ///< of the known ring's curvature
+};
+
+/// One hole's patch and image.
+struct HoleImage {
+  int hole = 0; ///< index into CurvatureImagesResult::coarse.holes
+  vcg_ext::PatchMesh patch;
+  std::vector<double> curvature; ///< signed mean curvature per patch vertex (unit box)
+  std::vector<double> value;     ///< colour-map value in [0,1] per patch vertex
+  double scale = 1;              ///< curvature that maps to the ends of the colour map
+  double low = 0, high = 0;      ///< the known ring's curvature percentiles
+  int rings = 0, target_rings = 0;
+  vcg_ext::MvcParameterization uv;
+  vcg_ext::CurvatureImage image;
+  double seconds = 0;  ///< stages 3-7 for this hole
+  std::string problem; ///< why there is no image; empty if there is one
+};
+
+struct CurvatureImagesResult {
+  vcg_ext::CoarseFillResult coarse;
+  std::vector<HoleImage> holes;
+  double adjacency_seconds = 0; ///< the one pass over the mesh all holes share
+};
+
+/// Fills the holes of `m` (stages 0-2), then builds every filled hole's image and colours the
+/// patch vertices with their curvature colours. Throws vcg_ext::InvalidMeshError or
+/// CancelledError with `m` exactly as it was.
+CurvatureImagesResult ComputeCurvatureImages(CMeshO& m, const CurvatureImagesParams& params,
+                                             vcg::CallBackPos* cb = nullptr);
+
+/// Writes hole_<k>_curvature.png, hole_<k>_rgba.png, hole_<k>_mask.png and hole_<k>.json for
+/// every hole with an image (k from 1). Throws std::runtime_error naming the file it could
+/// not write.
+void WriteHoleImages(const std::string& dir, const CurvatureImagesResult& result);
+
+/// Writes montage.png: one row per hole (curvature, RGBA over a checkerboard, mask).
+void WriteMontage(const std::string& path, const CurvatureImagesResult& result);
+
+std::vector<std::string> DescribeCurvatureImages(const CurvatureImagesResult& result);
+
+} // namespace curvature_inpaint
