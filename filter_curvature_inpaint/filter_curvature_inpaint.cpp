@@ -1,9 +1,10 @@
 #include "filter_curvature_inpaint.h"
 
+#include "curvature_images.h"
 #include "pipeline.h"
 
 FilterCurvatureInpaintPlugin::FilterCurvatureInpaintPlugin() {
-  typeList << FP_COARSE_HOLE_FILL;
+  typeList << FP_COARSE_HOLE_FILL << FP_CURVATURE_IMAGES;
   for (FilterIDType t : types()) actionList << new QAction(filterName(t), this);
 }
 
@@ -15,6 +16,8 @@ QString FilterCurvatureInpaintPlugin::filterName(FilterIDType filter) const {
   switch (filter) {
   case FP_COARSE_HOLE_FILL:
     return "Curvature Inpaint: Coarse Hole Fill";
+  case FP_CURVATURE_IMAGES:
+    return "Curvature Inpaint: Curvature Images";
   }
   return {};
 }
@@ -29,11 +32,21 @@ QString FilterCurvatureInpaintPlugin::filterInfo(FilterIDType filter) const {
            "cotangent weights. This is the coarse repair the Curvature Inpaint Hole Fill refines "
            "with detail. Holes whose border touches itself at a vertex are split there. The new "
            "faces are selected afterwards. Requires a mesh whose edges have at most two faces.";
+  case FP_CURVATURE_IMAGES:
+    return "Fills the holes as the Coarse Hole Fill does, then, around every hole, grows a "
+           "disk-shaped patch, estimates its mean curvature by APSS sphere fitting, and "
+           "colours the patch's vertices with it: blue convex, green flat, red concave. With "
+           "an output folder it also writes, per hole, the curvature image an inpainter is "
+           "given (the patch flattened onto a square by mean value coordinates), the same "
+           "image with the hole transparent, the hole's black and white mask, and a JSON file "
+           "with the patch, its UV coordinates and the normalization.";
   }
   return {};
 }
 
-MeshFilterInterface::FilterClass FilterCurvatureInpaintPlugin::getClass(QAction*) {
+MeshFilterInterface::FilterClass FilterCurvatureInpaintPlugin::getClass(QAction* a) {
+  if (ID(a) == FP_CURVATURE_IMAGES)
+    return FilterClass(MeshFilterInterface::Remeshing + MeshFilterInterface::VertexColoring);
   return FilterClass(MeshFilterInterface::Remeshing + MeshFilterInterface::Cleaning);
 }
 
@@ -78,6 +91,27 @@ void FilterCurvatureInpaintPlugin::initParameterSet(QAction* action, MeshModel&,
     par.addParam(RichBool("NewFaceSelected", true, "Select the newly created faces",
                           "Afterwards the selection is exactly the faces that fill the holes."));
     break;
+  case FP_CURVATURE_IMAGES: {
+    const curvature_inpaint::CurvatureImagesParams d;
+    par.addParam(RichInt("MaxHoleSize", 0, "Max size to be closed",
+                         "Holes with more boundary edges than this stay open and get no image. "
+                         "0: every hole."));
+    par.addParam(RichFloat("Context", float(d.segmentation.context), "Context around each hole",
+                           "Width of the known ring around each hole in the image, in hole "
+                           "radii. More context shows the inpainter more of the shape; less "
+                           "gives the hole more pixels."));
+    par.addParam(RichFloat("FilterScale", d.apss.filter_scale, "APSS filter scale",
+                           "Support of the APSS sphere fits, in local point spacings (MeshLab's "
+                           "MLS filter scale). Larger values smooth the curvature more."));
+    par.addParam(RichInt("ImageSize", d.image_size, "Image size (pixels)",
+                         "Side of the square images: 1024 for DALL-E 2, 512 for Stable "
+                         "Diffusion."));
+    par.addParam(RichString("OutputFolder", "", "Output folder",
+                            "Where to write hole_<k>_curvature.png, hole_<k>_rgba.png, "
+                            "hole_<k>_mask.png and hole_<k>.json for every hole. Empty: only "
+                            "colour the mesh."));
+    break;
+  }
   }
 }
 
@@ -90,6 +124,8 @@ bool FilterCurvatureInpaintPlugin::applyFilter(QAction* action, MeshDocument& md
   switch (ID(action)) {
   case FP_COARSE_HOLE_FILL:
     return applyCoarseHoleFill(*md.mm(), par, cb);
+  case FP_CURVATURE_IMAGES:
+    return applyCurvatureImages(*md.mm(), par, cb);
   }
   return false;
 }
@@ -111,6 +147,31 @@ bool FilterCurvatureInpaintPlugin::applyCoarseHoleFill(MeshModel& mm, const Rich
     Log(GLLogStream::WARNING, errorMessage.toStdString()); // meshlabserver prints only the log
     return false;
   }
+  mm.UpdateBoxAndNormals();
+  return true;
+}
+
+bool FilterCurvatureInpaintPlugin::applyCurvatureImages(MeshModel& mm, const RichParameterList& par,
+                                                        vcg::CallBackPos* cb) {
+  curvature_inpaint::CurvatureImagesParams params;
+  params.coarse.max_hole_edges = std::max(0, par.getInt("MaxHoleSize"));
+  params.segmentation.context = std::max(0.05f, par.getFloat("Context"));
+  params.apss.filter_scale = std::max(1.0f, par.getFloat("FilterScale"));
+  params.image_size = std::max(16, std::min(8192, par.getInt("ImageSize")));
+  const std::string folder = par.getString("OutputFolder").trimmed().toStdString();
+  try {
+    const auto result = curvature_inpaint::ComputeCurvatureImages(mm.cm, params, cb);
+    for (const std::string& line : curvature_inpaint::DescribeCurvatureImages(result)) Log(line);
+    if (!folder.empty()) {
+      curvature_inpaint::WriteHoleImages(folder, result);
+      Log("wrote the images of %zu holes to %s", result.holes.size(), folder.c_str());
+    }
+  } catch (const std::exception& e) {
+    errorMessage = QString("Curvature Images: ") + e.what() + ".";
+    Log(GLLogStream::WARNING, errorMessage.toStdString());
+    return false;
+  }
+  mm.updateDataMask(MeshModel::MM_VERTCOLOR);
   mm.UpdateBoxAndNormals();
   return true;
 }

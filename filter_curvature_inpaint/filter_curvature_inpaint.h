@@ -10,7 +10,7 @@ class FilterCurvatureInpaintPlugin : public QObject, public MeshFilterInterface 
   Q_INTERFACES(MeshFilterInterface)
 
 public:
-  enum { FP_COARSE_HOLE_FILL };
+  enum { FP_COARSE_HOLE_FILL, FP_CURVATURE_IMAGES };
 
   FilterCurvatureInpaintPlugin();
 
@@ -28,4 +28,5 @@ public:
 
 private:
   bool applyCoarseHoleFill(MeshModel& mm, const RichParameterList& par, vcg::CallBackPos* cb);
+  bool applyCurvatureImages(MeshModel& mm, const RichParameterList& par, vcg::CallBackPos* cb);
 };

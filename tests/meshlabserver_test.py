@@ -1,9 +1,11 @@
 """The plugin inside Debian's real meshlabserver, driven by the filter scripts we ship."""
 import glob
+import json
 import os
 import unittest
 
-from support import SCRIPTS, TempDirTest, info, make_meshlab_prefix, run, sha256, write_non_manifold_ply
+from support import (SCRIPTS, TOOL, TempDirTest, info, make_meshlab_prefix, png_size, run, sha256,
+                     write_non_manifold_ply)
 
 
 class MeshlabServer(TempDirTest):
@@ -29,6 +31,32 @@ class MeshlabServer(TempDirTest):
                 after = info(out)
                 self.assertEqual(after["holes"], 0)
                 self.assertEqual(after["non_manifold_edges"], 0)
+
+    def test_curvature_images_script_writes_the_images_of_two_holes(self):
+        once = self.punched("nefertiti.ply", 33416, 0.03, "once.ply")
+        twice = self.path("twice.ply")
+        r = run([TOOL, "punch", once, twice, "--seed-vertex", "20000", "--radius-frac", "0.03"])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(info(twice)["holes"], 2)
+        folder = self.path("images")
+        with open(os.path.join(SCRIPTS, "curvature_inpaint_curvature_images.mlx")) as f:
+            script = f.read()
+        self.assertIn('name="OutputFolder" value=""', script)
+        edited = self.path("images.mlx")
+        with open(edited, "w") as f:
+            f.write(script.replace('name="OutputFolder" value=""', f'name="OutputFolder" value="{folder}"'))
+        out = self.path("coloured.ply")
+        r = self.meshlabserver(twice, out, edited)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        for k in (1, 2):
+            for kind in ("curvature", "rgba", "mask"):
+                self.assertEqual(png_size(os.path.join(folder, f"hole_{k}_{kind}.png")), (1024, 1024))
+            with open(os.path.join(folder, f"hole_{k}.json")) as f:
+                meta = json.load(f)
+            self.assertEqual(len(meta["vertices"]), meta["patch_vertices"])
+            for v in meta["vertices"]:
+                self.assertTrue(0 <= v["u"] <= 1 and 0 <= v["v"] <= 1)
+        self.assertEqual(info(out)["holes"], 0)
 
     def test_refused_mesh_is_reported_and_not_written(self):
         src = write_non_manifold_ply(self.path("nonmanifold.ply"))

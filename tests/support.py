@@ -58,6 +58,15 @@ def grid(n):
     return vertices, faces
 
 
+def png_size(path):
+    """(width, height) from a PNG's IHDR chunk; fails if the file is not a PNG."""
+    with open(path, "rb") as f:
+        head = f.read(24)
+    if head[:8] != b"\x89PNG\r\n\x1a\n" or head[12:16] != b"IHDR":
+        raise AssertionError(f"{path} is not a PNG")
+    return int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")
+
+
 def write_non_manifold_ply(path):
     """A small grid with a third face on one of its edges."""
     v, f = grid(4)
