@@ -54,3 +54,40 @@ inline Topology Inspect(const Mesh& m) {
 }
 
 } // namespace test
+
+namespace test {
+
+/// Quad grid wrapped in u (and in v when `closed_v`), point(u, v) in [0,1)^2, outward faces.
+template <class F>
+void MakeParametric(Mesh& m, int nu, int nv, bool closed_v, F point) {
+  m.Clear();
+  const int rows = closed_v ? nv : nv + 1;
+  vcg::tri::Allocator<Mesh>::AddVertices(m, nu * rows);
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < nu; ++i) m.vert[j * nu + i].P() = point(double(i) / nu, double(j) / nv);
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const int a = j * nu + i, b = j * nu + (i + 1) % nu;
+      const int c = ((j + 1) % rows) * nu + (i + 1) % nu, d = ((j + 1) % rows) * nu + i;
+      vcg::tri::Allocator<Mesh>::AddFace(m, &m.vert[a], &m.vert[b], &m.vert[c]);
+      vcg::tri::Allocator<Mesh>::AddFace(m, &m.vert[a], &m.vert[c], &m.vert[d]);
+    }
+}
+
+inline void MakeTorus(Mesh& m, float R, float r, int nu = 96, int nv = 48) {
+  MakeParametric(m, nu, nv, true, [&](double u, double v) {
+    const double a = 2 * M_PI * u, b = 2 * M_PI * v;
+    return vcg::Point3f(float((R + r * std::cos(b)) * std::cos(a)),
+                        float((R + r * std::cos(b)) * std::sin(a)), float(r * std::sin(b)));
+  });
+}
+
+/// Open cylinder of radius r around z, from z = 0 to z = h.
+inline void MakeCylinder(Mesh& m, float r, float h, int nu = 96, int nv = 48) {
+  MakeParametric(m, nu, nv, false, [&](double u, double v) {
+    const double a = 2 * M_PI * u;
+    return vcg::Point3f(float(r * std::cos(a)), float(r * std::sin(a)), float(h * v));
+  });
+}
+
+} // namespace test

@@ -41,7 +41,8 @@ inline double SignedArea(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
 } // namespace detail
 
 /// Parameterizes the disk (`points`, `triangles`) whose boundary loop is `boundary` (in the
-/// triangles' orientation). Precondition: a topological disk with at least one triangle.
+/// triangles' orientation). Precondition: a topological disk whose boundary has at least four
+/// vertices.
 inline MvcParameterization ParameterizeMvc(const std::vector<Eigen::Vector3d>& points,
                                            const std::vector<std::array<int, 3>>& triangles,
                                            const std::vector<int>& boundary) {
@@ -51,16 +52,25 @@ inline MvcParameterization ParameterizeMvc(const std::vector<Eigen::Vector3d>& p
   std::vector<int> unknown(n, 0);
   std::vector<char> on_boundary(n, 0);
   for (int v : boundary) on_boundary[v] = 1;
-  double perimeter = 0;
-  for (size_t i = 0; i < boundary.size(); ++i)
-    perimeter += (points[boundary[(i + 1) % boundary.size()]] - points[boundary[i]]).norm();
-  // Start at a corner-worthy place: the square's corners fall at quarter perimeters, and a
-  // shifted start avoids a face with all three corners on one side in most patches.
-  double s = 0;
-  for (size_t i = 0; i < boundary.size(); ++i) {
-    out.uv[boundary[i]] =
-        detail::SquareBorder(perimeter > 0 ? s / perimeter : double(i) / boundary.size());
-    s += (points[boundary[(i + 1) % boundary.size()]] - points[boundary[i]]).norm();
+  // The boundary goes round the square by arc length, with the four vertices nearest the
+  // quarter lengths pinned to the corners: otherwise each corner of the image would be cut
+  // off by a boundary edge and stay empty.
+  const int nb = int(boundary.size());
+  std::vector<double> arc(nb + 1, 0.0);
+  for (int i = 0; i < nb; ++i)
+    arc[i + 1] = arc[i] + (points[boundary[(i + 1) % nb]] - points[boundary[i]]).norm();
+  const double perimeter = arc[nb] > 0 ? arc[nb] : 1.0;
+  std::array<int, 5> corner{{0, 0, 0, 0, nb}};
+  for (int c = 1; c < 4; ++c) {
+    int best = corner[c - 1] + 1;
+    for (int i = best; i <= nb - (4 - c); ++i)
+      if (std::abs(arc[i] - c * perimeter / 4) < std::abs(arc[best] - c * perimeter / 4)) best = i;
+    corner[c] = best;
+  }
+  for (int c = 0; c < 4; ++c) {
+    const double from = arc[corner[c]], span = std::max(arc[corner[c + 1]] - from, 1e-300);
+    for (int i = corner[c]; i < corner[c + 1]; ++i)
+      out.uv[boundary[i]] = detail::SquareBorder((c + (arc[i] - from) / span) / 4.0);
   }
   int nu = 0;
   for (int v = 0; v < n; ++v) unknown[v] = on_boundary[v] ? -1 : nu++;
