@@ -68,6 +68,12 @@ void BuildHoleImage(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vcg_e
   out.rings = region.rings;
   out.target_rings = region.target_rings;
   out.patch = vcg_ext::ExtractPatch(m, region, box);
+  const auto context_faces = std::count(out.patch.is_fill.begin(), out.patch.is_fill.end(), 0);
+  if (context_faces == 0 || out.patch.boundary.size() < 4) {
+    out.problem = "there is no room for context around it (it touches another hole or the "
+                  "mesh's end); it keeps its coarse fill";
+    return;
+  }
   if (!out.patch.IsDisk()) {
     out.problem = "its patch is not a disk (Euler characteristic " +
                   std::to_string(out.patch.euler) + ", " +

@@ -21,6 +21,40 @@ struct PatchMesh {
   bool IsDisk() const { return euler == 1 && boundary_loops == 1; }
 };
 
+namespace detail {
+
+/// Flips triangles so that every pair sharing an edge runs it in opposite directions (scans
+/// carry faces flipped against their neighbours; a disk can always be oriented). The first
+/// triangle of each connected piece keeps its orientation.
+inline void OrientConsistently(std::vector<std::array<int, 3>>& tris) {
+  std::unordered_map<uint64_t, std::vector<int>> by_edge;
+  for (int t = 0; t < int(tris.size()); ++t)
+    for (int k = 0; k < 3; ++k) by_edge[EdgeKey(tris[t][k], tris[t][(k + 1) % 3])].push_back(t);
+  std::vector<char> done(tris.size(), 0);
+  for (int seed = 0; seed < int(tris.size()); ++seed) {
+    if (done[seed]) continue;
+    done[seed] = 1;
+    std::vector<int> stack{seed};
+    while (!stack.empty()) {
+      const int t = stack.back();
+      stack.pop_back();
+      for (int k = 0; k < 3; ++k) {
+        const int a = tris[t][k], b = tris[t][(k + 1) % 3];
+        for (int u : by_edge[EdgeKey(a, b)]) {
+          if (u == t || done[u]) continue;
+          // u must run the edge b -> a.
+          for (int j = 0; j < 3; ++j)
+            if (tris[u][j] == a && tris[u][(j + 1) % 3] == b) std::swap(tris[u][1], tris[u][2]);
+          done[u] = 1;
+          stack.push_back(u);
+        }
+      }
+    }
+  }
+}
+
+} // namespace detail
+
 /// Builds the local disk of `region`. Ears of context faces (a face with two boundary edges)
 /// are peeled first: all three of their corners would land on the square's border, flat.
 template <class MeshType>
@@ -71,6 +105,7 @@ PatchMesh ExtractPatch(const MeshType& m, const HoleRegion& region, const UnitBo
     p.triangles.push_back(t);
     p.is_fill.push_back(fill[i]);
   }
+  detail::OrientConsistently(p.triangles);
   // Boundary: half-edges whose reverse is not in the patch, chained into loops.
   std::unordered_map<uint64_t, int> directed;
   for (const auto& t : p.triangles)
