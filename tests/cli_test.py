@@ -1,10 +1,11 @@
 """The command-line tool on real scans and on bad input."""
+import json
 import math
 import os
 import unittest
 
-from support import (SHARED_MESHES, TOOL, TempDirTest, grid, info, run, sha256, write_ascii_ply,
-                     write_non_manifold_ply)
+from support import (SHARED_MESHES, SOURCE, TOOL, TempDirTest, grid, info, png_size, run, sha256,
+                     write_ascii_ply, write_non_manifold_ply)
 
 
 class CoarseFill(TempDirTest):
@@ -55,6 +56,30 @@ class CoarseFill(TempDirTest):
             r = run([TOOL, "coarse", src, out, "--max-hole-edges", "20"])
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertEqual(info(out)["holes"], 1, ext)  # only the outer border is left
+
+
+class CurvatureImages(TempDirTest):
+    def test_images_of_every_hole_and_a_montage(self):
+        out = self.path("images")
+        r = run([TOOL, "images", os.path.join(SOURCE, "meshes", "sample_holes.ply"), out, "--size", "256"])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        for k in (1, 2, 3):
+            for kind in ("curvature", "rgba", "mask"):
+                self.assertEqual(png_size(os.path.join(out, f"hole_{k}_{kind}.png")), (256, 256))
+            with open(os.path.join(out, f"hole_{k}.json")) as f:
+                meta = json.load(f)
+            self.assertEqual(meta["image_size"], 256)
+            self.assertGreater(meta["rings"], 0)
+        w, h = png_size(os.path.join(out, "montage.png"))
+        self.assertGreater(h, 3 * 256)  # a row per hole
+
+    def test_refused_mesh_writes_no_images(self):
+        src = write_non_manifold_ply(self.path("nonmanifold.ply"))
+        out = self.path("images")
+        r = run([TOOL, "images", src, out])
+        self.assertNotEqual(r.returncode, 0)
+        self.assertIn("more than two faces", r.stderr)
+        self.assertFalse(os.path.exists(out))
 
 
 class BadInput(TempDirTest):
