@@ -3,6 +3,9 @@
 #include "curvature_images.h"
 #include "pipeline.h"
 
+#include <QDir>
+#include <QFileInfo>
+
 FilterCurvatureInpaintPlugin::FilterCurvatureInpaintPlugin() {
   typeList << FP_COARSE_HOLE_FILL << FP_CURVATURE_IMAGES;
   for (FilterIDType t : types()) actionList << new QAction(filterName(t), this);
@@ -159,6 +162,14 @@ bool FilterCurvatureInpaintPlugin::applyCurvatureImages(MeshModel& mm, const Ric
   params.apss.filter_scale = std::max(1.0f, par.getFloat("FilterScale"));
   params.image_size = std::max(16, std::min(8192, par.getInt("ImageSize")));
   const std::string folder = par.getString("OutputFolder").trimmed().toStdString();
+  // Refuse an unusable folder before the mesh is touched.
+  if (!folder.empty() && (!QDir().mkpath(QString::fromStdString(folder)) ||
+                          !QFileInfo(QString::fromStdString(folder)).isWritable())) {
+    errorMessage = QString("Curvature Images: cannot write to the output folder ") +
+                   QString::fromStdString(folder) + ". The mesh was not changed.";
+    Log(GLLogStream::WARNING, errorMessage.toStdString());
+    return false;
+  }
   try {
     const auto result = curvature_inpaint::ComputeCurvatureImages(mm.cm, params, cb);
     for (const std::string& line : curvature_inpaint::DescribeCurvatureImages(result)) Log(line);

@@ -58,6 +58,23 @@ class MeshlabServer(TempDirTest):
                 self.assertTrue(0 <= v["u"] <= 1 and 0 <= v["v"] <= 1)
         self.assertEqual(info(out)["holes"], 0)
 
+    def test_unwritable_output_folder_changes_nothing(self):
+        src = self.punched("nefertiti.ply", 33416, 0.03)
+        blocker = self.path("a-file")
+        with open(blocker, "w") as f:
+            f.write("not a folder\n")
+        with open(os.path.join(SCRIPTS, "curvature_inpaint_curvature_images.mlx")) as f:
+            script = f.read().replace('name="OutputFolder" value=""',
+                                      f'name="OutputFolder" value="{blocker}/images"')
+        edited = self.path("images.mlx")
+        with open(edited, "w") as f:
+            f.write(script)
+        out = self.path("out.ply")
+        r = self.meshlabserver(src, out, edited)
+        self.assertNotEqual(r.returncode, 0)
+        self.assertIn("cannot write to the output folder", r.stdout + r.stderr)
+        self.assertFalse(os.path.exists(out))
+
     def test_refused_mesh_is_reported_and_not_written(self):
         src = write_non_manifold_ply(self.path("nonmanifold.ply"))
         digest = sha256(src)
