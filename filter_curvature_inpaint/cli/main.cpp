@@ -1,9 +1,13 @@
 // curvature-inpaint: the command-line front end of the pipeline.
 #include "curvature_images.h"
+#include "inpaint/inpainter.h"
 #include "mesh_io.h"
 #include "pipeline.h"
 
 #include <vcg_ext/punch_hole.h>
+
+#include <QDir>
+#include <QImage>
 
 #include <cmath>
 #include <cstdio>
@@ -29,6 +33,15 @@ const char* const kUsage =
     "      the hole's mask (hole_<k>_mask.png, white = hole), hole_<k>.json (patch, UV,\n"
     "      normalization), and montage.png with all of them. N: pixels (default 1024); C:\n"
     "      context ring width in hole radii (default 1); S: APSS filter scale (default 4).\n"
+    "  curvature-inpaint inpaint IMAGE MASK OUTDIR [--backend NAME] [--url URL] [--model M]\n"
+    "                  [--prompt TEXT] [--negative-prompt TEXT] [-n N] [--seed S] [--size PX]\n"
+    "                  [--timeout SECONDS] [--retries N] [--max-response-mb MB] [--workflow FILE]\n"
+    "                  [--detail A]\n"
+    "      Complete the hole (white in MASK) of a curvature image into N variations,\n"
+    "      OUTDIR/variation_<i>.png. Backends: embedded (default, offline), openai\n"
+    "      (OPENAI_API_KEY, OPENAI_BASE_URL; --model dall-e-2 or gpt-image-1), sd-webui\n"
+    "      (--url, SD_WEBUI_AUTH=user:pass), stability (STABILITY_API_KEY), comfyui (--url,\n"
+    "      --workflow to use an edited copy of the shipped workflow).\n"
     "  curvature-inpaint info IN\n"
     "      Print the vertex, face and hole counts of IN (boundary edges of each hole).\n"
     "  curvature-inpaint punch IN OUT --seed-vertex V --radius-frac R\n"
@@ -96,6 +109,14 @@ double ParsePositive(const std::string& name, const std::string& v) {
   return x;
 }
 
+double ParseNonNegative(const std::string& name, const std::string& v) {
+  char* end = nullptr;
+  const double x = std::strtod(v.c_str(), &end);
+  if (v.empty() || *end != '\0' || !(x >= 0) || !std::isfinite(x))
+    throw UsageError(name + " needs a number >= 0");
+  return x;
+}
+
 bool ProgressToStderr(const int, const char* message) {
   std::fprintf(stderr, "%s\n", message);
   return true;
@@ -134,6 +155,40 @@ int Images(Args& args) {
     std::fprintf(stderr, "%s\n", line.c_str());
   curvature_inpaint::WriteHoleImages(files[1], result);
   curvature_inpaint::WriteMontage(files[1] + "/montage.png", result);
+  return 0;
+}
+
+int InpaintCommand(Args& args) {
+  curvature_inpaint::InpaintParams p;
+  p.backend = args.Option("--backend", p.backend);
+  p.url = args.Option("--url", "");
+  p.model = args.Option("--model", "");
+  p.prompt = args.Option("--prompt", "");
+  p.negative_prompt = args.Option("--negative-prompt", "");
+  p.variations = int(args.Integer("-n", p.variations, 1));
+  p.seed = uint32_t(args.Integer("--seed", p.seed, 0));
+  p.size = int(args.Integer("--size", 0, 0));
+  p.workflow_file = args.Option("--workflow", "");
+  const std::string timeout = args.Option("--timeout", "");
+  if (!timeout.empty()) p.http.total_timeout_s = ParsePositive("--timeout", timeout);
+  p.http.max_response_bytes = size_t(args.Integer("--max-response-mb", 64, 1)) << 20;
+  p.http.max_retries = int(args.Integer("--retries", p.http.max_retries, 0));
+  const std::string detail = args.Option("--detail", "");
+  if (!detail.empty()) p.detail = ParseNonNegative("--detail", detail);
+  const auto files = args.Positional(3);
+  QImage image(QString::fromStdString(files[0])), mask(QString::fromStdString(files[1]));
+  if (image.isNull()) throw std::runtime_error(files[0] + ": not a readable image");
+  if (mask.isNull()) throw std::runtime_error(files[1] + ": not a readable image");
+  std::fprintf(stderr, "inpainting with %s, %d variations\n", p.backend.c_str(), p.variations);
+  const auto variations = curvature_inpaint::Inpaint(image, mask, p);
+  if (!QDir().mkpath(QString::fromStdString(files[2])))
+    throw std::runtime_error("cannot create " + files[2]);
+  for (size_t i = 0; i < variations.size(); ++i) {
+    const std::string path = files[2] + "/variation_" + std::to_string(i + 1) + ".png";
+    if (!variations[i].save(QString::fromStdString(path), "PNG"))
+      throw std::runtime_error("cannot write " + path);
+    std::fprintf(stderr, "wrote %s\n", path.c_str());
+  }
   return 0;
 }
 
@@ -179,6 +234,7 @@ int main(int argc, char** argv) {
     if (command == "coarse") return Coarse(args);
     if (command == "images") return Images(args);
     if (command == "info") return Info(args);
+    if (command == "inpaint") return InpaintCommand(args);
     if (command == "punch") return Punch(args);
     if (command == "-h" || command == "--help" || command == "help") {
       std::printf("%s", kUsage);

@@ -1,0 +1,261 @@
+// The embedded inpainter: offline, deterministic for a seed, no new dependency.
+//
+// 1. Read the curvature value back from every known pixel (the colour map's exact inverse).
+// 2. Continue it into the hole with a biharmonic solve (Eigen sparse), at most 256 pixels per
+//    side and upsampled: the curvature field is smooth at that scale, and a biharmonic
+//    continuation keeps its level and its slope across the hole's border (measured in the
+//    design notes: RMS 0.018 against 0.10 for OpenCV's Telea, 0.09 for Navier-Stokes).
+// 3. Add fine detail: the known region's high-pass residual, copied into the hole in
+//    feathered blocks from places chosen by the seed, so each seed gives another variation
+//    with the amplitude of detail the surroundings show.
+#include "inpainter.h"
+
+#include <vcg_ext/curvature_colormap.h>
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace curvature_inpaint {
+
+namespace {
+
+struct Field {
+  int w = 0, h = 0;
+  std::vector<double> v;
+  std::vector<char> known;
+  double& at(int x, int y) { return v[size_t(y) * w + x]; }
+  double at(int x, int y) const { return v[size_t(y) * w + x]; }
+  bool is_known(int x, int y) const { return known[size_t(y) * w + x]; }
+};
+
+Field ReadField(const QImage& image, const QImage& mask) {
+  Field f;
+  f.w = image.width();
+  f.h = image.height();
+  f.v.assign(size_t(f.w) * f.h, 0.5);
+  f.known.assign(size_t(f.w) * f.h, 0);
+  for (int y = 0; y < f.h; ++y)
+    for (int x = 0; x < f.w; ++x) {
+      if (qGray(mask.pixel(x, y)) > 127) continue;
+      const QRgb c = image.pixel(x, y);
+      f.at(x, y) =
+          vcg_ext::CurvatureColormap::Invert(Eigen::Vector3d(qRed(c), qGreen(c), qBlue(c))).t;
+      f.known[size_t(y) * f.w + x] = 1;
+    }
+  return f;
+}
+
+/// Minimises the squared 5-point Laplacian over the unknown pixels with the known ones fixed:
+/// the discrete biharmonic continuation. Exact for harmonic fields.
+bool SolveBiharmonic(Field& f) {
+  std::vector<int> index(f.v.size(), -1);
+  int n = 0;
+  for (size_t i = 0; i < f.v.size(); ++i)
+    if (!f.known[i]) index[i] = n++;
+  if (n == 0) return true;
+  std::vector<Eigen::Triplet<double>> a;
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
+  const int dx[5] = {0, 1, -1, 0, 0}, dy[5] = {0, 0, 0, 1, -1};
+  const double c[5] = {-4, 1, 1, 1, 1};
+  for (int y = 1; y + 1 < f.h; ++y)
+    for (int x = 1; x + 1 < f.w; ++x) {
+      int ids[5];
+      bool touches = false;
+      double fixed = 0;
+      for (int k = 0; k < 5; ++k) {
+        ids[k] = index[size_t(y + dy[k]) * f.w + x + dx[k]];
+        if (ids[k] >= 0)
+          touches = true;
+        else
+          fixed += c[k] * f.at(x + dx[k], y + dy[k]);
+      }
+      if (!touches) continue;
+      for (int i = 0; i < 5; ++i) {
+        if (ids[i] < 0) continue;
+        b[ids[i]] -= c[i] * fixed;
+        for (int j = 0; j < 5; ++j)
+          if (ids[j] >= 0) a.emplace_back(ids[i], ids[j], c[i] * c[j]);
+      }
+    }
+  // Unknown pixels no stencil reaches (an image-wide hole's corners) stay put.
+  for (int i = 0; i < n; ++i) a.emplace_back(i, i, 1e-9);
+  Eigen::SparseMatrix<double> A(n, n);
+  A.setFromTriplets(a.begin(), a.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
+  if (solver.info() != Eigen::Success) return false;
+  const Eigen::VectorXd x = solver.solve(b);
+  if (!x.allFinite()) return false;
+  for (size_t i = 0; i < f.v.size(); ++i)
+    if (index[i] >= 0) f.v[i] = x[index[i]];
+  return true;
+}
+
+/// The field at 1/factor resolution: a coarse pixel is known only when all its pixels are.
+Field Downsample(const Field& f, int factor) {
+  Field c;
+  c.w = (f.w + factor - 1) / factor;
+  c.h = (f.h + factor - 1) / factor;
+  c.v.assign(size_t(c.w) * c.h, 0.5);
+  c.known.assign(size_t(c.w) * c.h, 1);
+  std::vector<int> count(c.v.size(), 0);
+  std::vector<double> sum(c.v.size(), 0.0);
+  for (int y = 0; y < f.h; ++y)
+    for (int x = 0; x < f.w; ++x) {
+      const size_t ci = size_t(y / factor) * c.w + x / factor;
+      if (!f.is_known(x, y)) c.known[ci] = 0;
+      sum[ci] += f.at(x, y);
+      ++count[ci];
+    }
+  for (size_t i = 0; i < c.v.size(); ++i) c.v[i] = count[i] ? sum[i] / count[i] : 0.5;
+  return c;
+}
+
+double Bilinear(const Field& c, double x, double y) {
+  x = std::max(0.0, std::min(c.w - 1.0, x));
+  y = std::max(0.0, std::min(c.h - 1.0, y));
+  const int x0 = std::min(int(x), c.w - 2 < 0 ? 0 : c.w - 2),
+            y0 = std::min(int(y), c.h - 2 < 0 ? 0 : c.h - 2);
+  const int x1 = std::min(x0 + 1, c.w - 1), y1 = std::min(y0 + 1, c.h - 1);
+  const double fx = x - x0, fy = y - y0;
+  return (1 - fy) * ((1 - fx) * c.at(x0, y0) + fx * c.at(x1, y0)) +
+         fy * ((1 - fx) * c.at(x0, y1) + fx * c.at(x1, y1));
+}
+
+/// Box blur of the known values only (normalized), `radius` pixels, three passes ~ Gaussian.
+std::vector<double> BlurKnown(const Field& f, int radius) {
+  std::vector<double> val(f.v.size()), wgt(f.v.size());
+  for (size_t i = 0; i < f.v.size(); ++i) val[i] = f.known[i] ? f.v[i] : 0, wgt[i] = f.known[i];
+  auto pass = [&](std::vector<double>& a, bool horizontal) {
+    std::vector<double> out(a.size());
+    const int len = horizontal ? f.w : f.h, lines = horizontal ? f.h : f.w;
+    for (int l = 0; l < lines; ++l) {
+      auto idx = [&](int i) { return horizontal ? size_t(l) * f.w + i : size_t(i) * f.w + l; };
+      double acc = 0;
+      for (int i = -radius; i <= radius; ++i) acc += a[idx(std::max(0, std::min(len - 1, i)))];
+      for (int i = 0; i < len; ++i) {
+        out[idx(i)] = acc / (2 * radius + 1);
+        acc += a[idx(std::min(len - 1, i + radius + 1))] - a[idx(std::max(0, i - radius))];
+      }
+    }
+    a.swap(out);
+  };
+  for (int k = 0; k < 3; ++k)
+    for (bool hz : {true, false}) pass(val, hz), pass(wgt, hz);
+  for (size_t i = 0; i < val.size(); ++i) val[i] = wgt[i] > 1e-6 ? val[i] / wgt[i] : 0.5;
+  return val;
+}
+
+} // namespace
+
+/// The field with a band of `width` known pixels around the hole made unknown.
+Field WithoutBorderBand(const Field& f, int width) {
+  Field g = f;
+  for (int pass = 0; pass < width; ++pass) {
+    std::vector<char> next = g.known;
+    for (int y = 0; y < g.h; ++y)
+      for (int x = 0; x < g.w; ++x)
+        if (g.is_known(x, y))
+          for (int k = 0; k < 4 && next[size_t(y) * g.w + x]; ++k) {
+            const int nx = x + (k == 0) - (k == 1), ny = y + (k == 2) - (k == 3);
+            if (nx >= 0 && ny >= 0 && nx < g.w && ny < g.h && !g.is_known(nx, ny))
+              next[size_t(y) * g.w + x] = 0;
+          }
+    g.known.swap(next);
+  }
+  return g;
+}
+
+std::vector<QImage> InpaintEmbedded(const QImage& image, const QImage& mask,
+                                    const InpaintParams& p) {
+  Field f = ReadField(image.convertToFormat(QImage::Format_RGB32), mask);
+  const int longest = std::max(f.w, f.h);
+  const int factor = std::max(1, (longest + 255) / 256);
+  // The pixels right at the hole's border carry the seam between the scan and its coarse fill
+  // (the curvature fits there straddle both): the continuation starts a little way out.
+  const Field solve = WithoutBorderBand(f, std::max(1, longest / 128));
+  Field base = solve;
+  if (factor == 1) {
+    if (!SolveBiharmonic(base)) throw InpaintError("embedded: the biharmonic solve failed");
+  } else {
+    Field coarse = Downsample(solve, factor);
+    if (!SolveBiharmonic(coarse)) throw InpaintError("embedded: the biharmonic solve failed");
+    for (int y = 0; y < f.h; ++y)
+      for (int x = 0; x < f.w; ++x)
+        if (!solve.is_known(x, y))
+          base.at(x, y) = Bilinear(coarse, (x + 0.5) / factor - 0.5, (y + 0.5) / factor - 0.5);
+  }
+
+  // The known region's fine detail: what a blur of a few pixels removes.
+  const int radius = std::max(2, longest / 128);
+  const std::vector<double> smooth = BlurKnown(f, radius);
+  std::vector<double> residual(f.v.size(), 0.0);
+  for (size_t i = 0; i < f.v.size(); ++i)
+    if (f.known[i]) residual[i] = f.v[i] - smooth[i];
+  // Block sources: squares of known pixels only.
+  const int block = std::max(8, 4 * radius);
+  std::vector<std::pair<int, int>> sources;
+  {
+    // Summed-area table of unknown pixels, to test a square in O(1).
+    std::vector<int> sat(size_t(f.w + 1) * (f.h + 1), 0);
+    for (int y = 0; y < f.h; ++y)
+      for (int x = 0; x < f.w; ++x)
+        sat[size_t(y + 1) * (f.w + 1) + x + 1] =
+            !f.is_known(x, y) + sat[size_t(y) * (f.w + 1) + x + 1] +
+            sat[size_t(y + 1) * (f.w + 1) + x] - sat[size_t(y) * (f.w + 1) + x];
+    const int step = std::max(1, block / 4);
+    for (int y = 0; y + block <= f.h; y += step)
+      for (int x = 0; x + block <= f.w; x += step) {
+        const int holes = sat[size_t(y + block) * (f.w + 1) + x + block] -
+                          sat[size_t(y) * (f.w + 1) + x + block] -
+                          sat[size_t(y + block) * (f.w + 1) + x] + sat[size_t(y) * (f.w + 1) + x];
+        if (holes == 0) sources.emplace_back(x, y);
+      }
+  }
+
+  std::vector<QImage> out;
+  for (int variation = 0; variation < p.variations; ++variation) {
+    std::vector<double> detail(f.v.size(), 0.0), weight(f.v.size(), 0.0);
+    if (p.detail > 0 && !sources.empty()) {
+      std::mt19937 rng(p.seed + 7919u * uint32_t(variation));
+      std::uniform_int_distribution<size_t> pick(0, sources.size() - 1);
+      const int stride = block / 2;
+      for (int by = -stride; by < f.h; by += stride)
+        for (int bx = -stride; bx < f.w; bx += stride) {
+          bool needed = false;
+          for (int y = std::max(0, by); y < std::min(f.h, by + block) && !needed; ++y)
+            for (int x = std::max(0, bx); x < std::min(f.w, bx + block) && !needed; ++x)
+              needed = !f.is_known(x, y);
+          if (!needed) continue;
+          const auto src = sources[pick(rng)];
+          for (int j = 0; j < block; ++j)
+            for (int i = 0; i < block; ++i) {
+              const int x = bx + i, y = by + j;
+              if (x < 0 || y < 0 || x >= f.w || y >= f.h || f.is_known(x, y)) continue;
+              // Hann window: overlapping blocks blend without seams.
+              const double w =
+                  std::sin(M_PI * (i + 0.5) / block) * std::sin(M_PI * (j + 0.5) / block);
+              detail[size_t(y) * f.w + x] +=
+                  w * w * residual[size_t(src.second + j) * f.w + src.first + i];
+              weight[size_t(y) * f.w + x] += w * w;
+            }
+        }
+    }
+    QImage result(f.w, f.h, QImage::Format_RGB32);
+    for (int y = 0; y < f.h; ++y)
+      for (int x = 0; x < f.w; ++x) {
+        const size_t i = size_t(y) * f.w + x;
+        double t = base.v[i];
+        if (!f.known[i] && weight[i] > 0) t += p.detail * detail[i] / weight[i];
+        const vcg_ext::Rgb8 c = vcg_ext::CurvatureColormap::Color8(t);
+        result.setPixel(x, y, qRgb(c.r, c.g, c.b));
+      }
+    out.push_back(result);
+  }
+  return out;
+}
+
+} // namespace curvature_inpaint

@@ -1,0 +1,56 @@
+// Stage 8: complete a hole's curvature image into N variations (paper, sections 3.6-3.7).
+//
+// One entry point for every backend: the embedded one (offline, the default) and the remote
+// services (OpenAI images/edits, Stable Diffusion web UIs, Stability AI, ComfyUI). Every
+// backend works at a size its service accepts, returns the variations at the image's own size
+// and pastes the known pixels back over them, so only the hole ever changes.
+#pragma once
+
+#include "http_client.h"
+
+#include <QImage>
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace curvature_inpaint {
+
+struct InpaintParams {
+  std::string backend = "embedded"; ///< embedded, openai, sd-webui, stability, comfyui
+  std::string url;                  ///< service address; empty: the backend's default
+  std::string model;                ///< openai: dall-e-2 (default) or gpt-image-1
+  std::string prompt;               ///< empty: the paper's prompt for the backend
+  std::string negative_prompt;
+  int variations = 4;
+  uint32_t seed = 1;
+  int size = 0;              ///< service-side image size; 0: the backend's default
+  double detail = 1.0;       ///< embedded: amplitude of the synthesised fine detail
+  std::string workflow_file; ///< comfyui: an edited workflow; empty: the shipped one
+  HttpOptions http;
+};
+
+/// Why a backend produced no variations: one sentence naming the backend, and for a service
+/// its HTTP status and its own message. Never contains an API key.
+class InpaintError : public std::runtime_error {
+public:
+  explicit InpaintError(const std::string& what) : std::runtime_error(what) {}
+};
+
+/// The backends this build knows.
+const std::vector<std::string>& InpaintBackends();
+
+/// The prompt the backend gets when none is given (the paper's, where it gives one).
+std::string DefaultPrompt(const std::string& backend);
+
+/// Completes the hole of `image` (white pixels of `mask`, same size) into params.variations
+/// images of the same size. Throws InpaintError.
+std::vector<QImage> Inpaint(const QImage& image, const QImage& mask, const InpaintParams& params);
+
+/// The embedded backend alone: biharmonic continuation of the curvature field plus detail
+/// synthesised from the known region (embedded_inpainter.cpp).
+std::vector<QImage> InpaintEmbedded(const QImage& image, const QImage& mask,
+                                    const InpaintParams& params);
+
+} // namespace curvature_inpaint
