@@ -1,6 +1,7 @@
 // Measurement tools for the benchmark (not part of the product):
 //   bench_tools metrics GROUND_TRUTH INPUT RESULT   distances in and around the filled region
 //   bench_tools subdivide IN OUT                    one midpoint (1-to-4) subdivision
+#include "curvature_images.h"
 #include "mesh_io.h"
 #include "pipeline.h"
 
@@ -147,6 +148,59 @@ int Subdivide(const std::string& in, const std::string& out) {
   return 0;
 }
 
+// The inpainting benchmark's ground truth: the curvature images of INPUT's holes (as
+// `curvature-inpaint images` makes them) and, beside each, the ideal image: the ground truth's
+// own APSS curvature carried to every coarse-patch vertex from the nearest ground-truth
+// vertex, normalized and rasterized exactly like the hole's image.
+int Ideal(const std::string& gt_path, const std::string& input_path, const std::string& dir, int size) {
+  CMeshO gt, in;
+  curvature_inpaint::LoadMesh(gt_path, gt);
+  curvature_inpaint::LoadMesh(input_path, in);
+  curvature_inpaint::CurvatureImagesParams params;
+  params.image_size = size;
+  const auto result = curvature_inpaint::ComputeCurvatureImages(in, params);
+  curvature_inpaint::WriteHoleImages(dir, result);
+  const vcg_ext::UnitBox& box = result.coarse.box; // the input's units, as in its images
+  for (size_t k = 0; k < result.holes.size(); ++k) {
+    const auto& hi = result.holes[k];
+    if (!hi.problem.empty()) continue;
+    Eigen::AlignedBox3d region;
+    for (const auto& p : hi.patch.points) region.extend(p);
+    const Eigen::Vector3d margin = 0.15 * (region.max() - region.min()) + Eigen::Vector3d::Constant(1e-3);
+    region.extend(region.min() - margin);
+    region.extend(region.max() + margin);
+    std::vector<Eigen::Vector3d> points, normals;
+    for (const auto& v : gt.vert) {
+      const Eigen::Vector3d p = box.ToUnit(v.cP());
+      if (!region.contains(p)) continue;
+      points.push_back(p);
+      normals.emplace_back(v.cN()[0], v.cN()[1], v.cN()[2]);
+    }
+    std::vector<int> nearest(hi.patch.points.size(), 0);
+    for (size_t i = 0; i < hi.patch.points.size(); ++i) {
+      double best = 1e300;
+      for (size_t j = 0; j < points.size(); ++j) {
+        const double d = (points[j] - hi.patch.points[i]).squaredNorm();
+        if (d < best) best = d, nearest[i] = int(j);
+      }
+    }
+    const std::vector<double> h = vcg_ext::ApssMeanCurvature(points, normals, nearest);
+    std::vector<double> value(h.size());
+    for (size_t i = 0; i < h.size(); ++i)
+      value[i] = std::isfinite(h[i]) ? std::max(0.0, std::min(1.0, 0.5 + 0.5 * h[i] / hi.scale)) : 0.5;
+    const auto ideal = vcg_ext::RasterizeCurvature(hi.uv.uv, value, hi.patch.triangles, hi.patch.is_fill, size);
+    QImage q(size, size, QImage::Format_RGB32);
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x) {
+        const uint8_t* c = &ideal.rgb[(size_t(y) * size + x) * 3];
+        q.setPixel(x, y, qRgb(c[0], c[1], c[2]));
+      }
+    const std::string path = dir + "/hole_" + std::to_string(k + 1) + "_ideal.png";
+    if (!q.save(QString::fromStdString(path))) throw std::runtime_error("cannot write " + path);
+  }
+  return 0;
+}
+
 // A and B in one file, B moved beside A: a larger mesh around exactly the same holes of A.
 int Append(const std::string& a_path, const std::string& b_path, const std::string& out) {
   CMeshO a, b;
@@ -225,6 +279,7 @@ int main(int argc, char** argv) {
     if (cmd == "metrics" && argc == 5) return Metrics(argv[2], argv[3], argv[4]);
     if (cmd == "subdivide" && argc == 4) return Subdivide(argv[2], argv[3]);
     if (cmd == "append" && argc == 5) return Append(argv[2], argv[3], argv[4]);
+    if (cmd == "ideal" && argc == 6) return Ideal(argv[2], argv[3], argv[4], std::stoi(argv[5]));
     if (cmd == "render" && (argc == 8 || argc == 11))
       return Render(
           argv[2], argv[3], Point3m(std::stof(argv[4]), std::stof(argv[5]), std::stof(argv[6])),
@@ -232,7 +287,7 @@ int main(int argc, char** argv) {
           argc == 11 ? Point3m(std::stof(argv[8]), std::stof(argv[9]), std::stof(argv[10]))
                      : Point3m(0, 0, 0));
     std::fprintf(stderr, "usage: bench_tools metrics GT INPUT RESULT | subdivide IN OUT | "
-                         "append A B OUT | render MESH OUT.png CX CY CZ RADIUS [VX VY VZ]\n");
+                         "append A B OUT | ideal GT INPUT DIR SIZE | render MESH OUT.png CX CY CZ RADIUS [VX VY VZ]\n");
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_tools: %s\n", e.what());
