@@ -163,7 +163,7 @@ CurvatureImagesResult ComputeCurvatureImages(CMeshO& m, const CurvatureImagesPar
     throw;
   }
   for (const HoleImage& hi : result.holes) {
-    if (!hi.problem.empty()) continue;
+    if (!hi.problem.empty() || !params.color_vertices) continue;
     for (size_t v = 0; v < hi.patch.vertices.size(); ++v) {
       const vcg_ext::Rgb8 c = vcg_ext::CurvatureColormap::Color8(hi.value[v]);
       m.vert[hi.patch.vertices[v]].C() = vcg::Color4b(c.r, c.g, c.b, 255);
@@ -171,8 +171,6 @@ CurvatureImagesResult ComputeCurvatureImages(CMeshO& m, const CurvatureImagesPar
   }
   return result;
 }
-
-namespace {
 
 QImage ToQImage(const vcg_ext::CurvatureImage& img, bool with_alpha) {
   QImage q(img.size, img.size, with_alpha ? QImage::Format_ARGB32 : QImage::Format_RGB32);
@@ -192,6 +190,8 @@ QImage MaskImage(const vcg_ext::CurvatureImage& img) {
       q.setPixel(x, y, img.hole[size_t(y) * img.size + x] ? qRgb(255, 255, 255) : qRgb(0, 0, 0));
   return q;
 }
+
+namespace {
 
 void Save(const QImage& image, const std::string& path) {
   if (!image.save(QString::fromStdString(path), "PNG"))

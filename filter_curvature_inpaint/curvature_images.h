@@ -4,6 +4,8 @@
 #pragma once
 
 #include <common/ml_mesh_type.h>
+
+#include <QImage>
 #include <vcg_ext/apss_curvature.h>
 #include <vcg_ext/coarse_fill.h>
 #include <vcg_ext/curvature_image.h>
@@ -22,6 +24,7 @@ struct CurvatureImagesParams {
   int image_size = 1024; ///< pixels per side (DALL-E 2: 1024, Stable Diffusion: 512)
   int apss_rings = 3;    ///< rings of vertices beyond the patch that support the fits
   double low_percentile = 0.05, high_percentile = 0.95; ///< of the known ring's curvature
+  bool color_vertices = true; ///< paint the patch vertices with their curvature colours
 };
 
 /// One hole's patch and image.
@@ -55,6 +58,10 @@ CurvatureImagesResult ComputeCurvatureImages(CMeshO& m, const CurvatureImagesPar
 /// every hole with an image (k from 1). Throws std::runtime_error naming the file it could
 /// not write.
 void WriteHoleImages(const std::string& dir, const CurvatureImagesResult& result);
+
+/// The image as RGB (or RGBA with the hole transparent), and its mask (white on the hole).
+QImage ToQImage(const vcg_ext::CurvatureImage& img, bool with_alpha);
+QImage MaskImage(const vcg_ext::CurvatureImage& img);
 
 /// Writes montage.png: one row per hole (curvature, RGBA over a checkerboard, mask).
 void WriteMontage(const std::string& path, const CurvatureImagesResult& result);

@@ -211,3 +211,50 @@ class Embedded(TempDirTest):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+def read_binary_ply_xyz(path):
+    """Vertex coordinates of a binary little-endian PLY whose vertices start with float x y z."""
+    import struct
+    data = open(path, "rb").read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode()
+    assert "binary_little_endian" in header, header
+    n = int(header.split("element vertex ")[1].split()[0])
+    props = header.split("element vertex")[1].split("element face")[0]
+    sizes = {"float": 4, "double": 8, "uchar": 1, "int": 4, "uint": 4}
+    stride = sum(sizes[line.split()[1]] for line in props.splitlines() if line.startswith("property"))
+    return [struct.unpack_from("<3f", data, end + i * stride) for i in range(n)]
+
+
+class FillPipeline(TempDirTest):
+    def test_fill_is_watertight_and_leaves_the_rest_bit_for_bit(self):
+        src = os.path.join(SOURCE, "meshes", "sample_holes.ply")
+        out, report = self.path("filled.ply"), self.path("report.json")
+        r = run([TOOL, "fill", src, out, "--size", "128", "--report", report, "--images", self.path("img")])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        from support import info
+        self.assertEqual(info(out)["holes"], 0)
+        before, after = read_binary_ply_xyz(src), read_binary_ply_xyz(out)
+        self.assertGreater(len(after), len(before))
+        self.assertEqual(after[:len(before)], before)
+        import json
+        holes = json.load(open(report))["holes"]
+        self.assertEqual(len(holes), 3)
+        for h in holes:
+            self.assertEqual(len(h["scores"]), 4)
+            self.assertEqual(h["pick"], 1 + max(range(4), key=lambda i: h["scores"][i]))
+        self.assertTrue(os.path.exists(self.path("img/montage.png")))
+
+    def test_failing_backend_changes_nothing_and_says_why(self):
+        server = Server()
+        self.addCleanup(server.stop)
+        src = os.path.join(SOURCE, "meshes", "sample_holes.ply")
+        digest = open(src, "rb").read()
+        out = self.path("filled.ply")
+        r = run([TOOL, "fill", src, out, "--size", "128", "--backend", "sd-webui", "--url",
+                 server.url("server-error"), "--retries", "0"])
+        self.assertNotEqual(r.returncode, 0)
+        self.assertIn("sd-webui: HTTP 500", r.stderr.strip().splitlines()[-1])
+        self.assertFalse(os.path.exists(out))
+        self.assertEqual(open(src, "rb").read(), digest)

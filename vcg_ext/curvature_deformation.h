@@ -106,6 +106,22 @@ inline bool SolveFree(const Eigen::SparseMatrix<double>& A, const std::vector<ch
 
 } // namespace detail
 
+/// Signed mean curvature of every vertex as the direct mode measures it: half the cotangent
+/// Laplacian of position along the normal (meaningful where the vertex's ring is complete).
+inline std::vector<double> DiscreteMeanCurvature(const std::vector<Eigen::Vector3d>& points,
+                                                 const std::vector<std::array<int, 3>>& triangles) {
+  std::vector<double> mass;
+  const Eigen::SparseMatrix<double> W = detail::CotanMatrix(points, triangles, mass);
+  const auto normals = detail::VertexNormals(points, triangles);
+  Eigen::MatrixXd x(points.size(), 3);
+  for (size_t i = 0; i < points.size(); ++i) x.row(i) = points[i].transpose();
+  const Eigen::MatrixXd lx = W * x;
+  std::vector<double> h(points.size(), 0.0);
+  for (size_t i = 0; i < points.size(); ++i)
+    if (mass[i] > 0) h[i] = 0.5 * lx.row(i).dot(normals[i].transpose()) / mass[i];
+  return h;
+}
+
 struct DirectDeformationParams {
   int iterations = 4; ///< solves, each with normals and weights from the previous result
 };

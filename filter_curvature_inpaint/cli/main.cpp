@@ -1,5 +1,6 @@
 // curvature-inpaint: the command-line front end of the pipeline.
 #include "curvature_images.h"
+#include "hole_fill.h"
 #include "inpaint/inpainter.h"
 #include "mesh_io.h"
 #include "pipeline.h"
@@ -20,6 +21,13 @@ namespace {
 
 const char* const kUsage =
     "usage:\n"
+    "  curvature-inpaint fill IN OUT [--backend NAME] [--url URL] [--model M] [--prompt TEXT]\n"
+    "                   [--variations N] [--pick auto|K] [--mode direct|paper] [--similitude S]\n"
+    "                   [--transformation-constant T] [--max-hole-edges N] [--size PX]\n"
+    "                   [--images DIR] [--report FILE.json]\n"
+    "      The main job: fill every hole of IN with detail (coarse fill, curvature images,\n"
+    "      inpainting, deformation to the chosen variation) and write OUT. --pick auto (default)\n"
+    "      takes the best-scored variation. Backends and their options as for inpaint.\n"
     "  curvature-inpaint coarse IN OUT [--max-hole-edges N] [--selected-only]\n"
     "                                 [--liepa-max-edges M] [--no-refine] [--no-fair]\n"
     "      Fill every hole of IN (stages 0-2: Liepa triangulation, refinement, fairing) and\n"
@@ -192,6 +200,49 @@ int InpaintCommand(Args& args) {
   return 0;
 }
 
+int Fill(Args& args) {
+  curvature_inpaint::HoleFillParams p;
+  p.inpaint.backend = args.Option("--backend", p.inpaint.backend);
+  p.inpaint.url = args.Option("--url", "");
+  p.inpaint.model = args.Option("--model", "");
+  p.inpaint.prompt = args.Option("--prompt", "");
+  p.inpaint.variations = int(args.Integer("--variations", p.inpaint.variations, 1));
+  p.inpaint.seed = uint32_t(args.Integer("--seed", p.inpaint.seed, 0));
+  const std::string timeout = args.Option("--timeout", "");
+  if (!timeout.empty()) p.inpaint.http.total_timeout_s = ParsePositive("--timeout", timeout);
+  p.inpaint.http.max_retries = int(args.Integer("--retries", p.inpaint.http.max_retries, 0));
+  const std::string pick = args.Option("--pick", "auto");
+  if (pick != "auto") {
+    char* end = nullptr;
+    const long k = std::strtol(pick.c_str(), &end, 10);
+    if (*end != '\0' || k < 1) throw UsageError("--pick needs auto or a variation number >= 1");
+    p.pick = int(k);
+  }
+  p.mode = args.Option("--mode", p.mode);
+  if (p.mode != "direct" && p.mode != "paper") throw UsageError("--mode is direct or paper");
+  const std::string sim = args.Option("--similitude", "");
+  if (!sim.empty()) p.paper.similitude = ParsePositive("--similitude", sim);
+  const std::string tc = args.Option("--transformation-constant", "");
+  if (!tc.empty()) p.paper.transformation_constant = ParsePositive("--transformation-constant", tc);
+  p.images.coarse.max_hole_edges = int(args.Integer("--max-hole-edges", 0, 0));
+  p.images.image_size = int(args.Integer("--size", 512, 16));
+  p.images_dir = args.Option("--images", "");
+  const std::string report = args.Option("--report", "");
+  const auto files = args.Positional(2);
+  CMeshO m;
+  const int mask = curvature_inpaint::LoadMesh(files[0], m);
+  const auto result = curvature_inpaint::FillHoles(m, p, ProgressToStderr);
+  for (const auto& line : curvature_inpaint::DescribeHoleFill(result)) std::fprintf(stderr, "%s\n", line.c_str());
+  curvature_inpaint::SaveMesh(files[1], m, mask);
+  if (!report.empty()) {
+    std::FILE* f = std::fopen(report.c_str(), "w");
+    const std::string json = curvature_inpaint::HoleFillReportJson(result, p);
+    if (!f || std::fwrite(json.data(), 1, json.size(), f) != json.size() || std::fclose(f) != 0)
+      throw std::runtime_error("cannot write " + report);
+  }
+  return 0;
+}
+
 int Info(Args& args) {
   const auto files = args.Positional(1);
   CMeshO m;
@@ -231,6 +282,7 @@ int main(int argc, char** argv) {
   Args args(argc, argv);
   try {
     const std::string command = args.Command();
+    if (command == "fill") return Fill(args);
     if (command == "coarse") return Coarse(args);
     if (command == "images") return Images(args);
     if (command == "info") return Info(args);

@@ -1,0 +1,310 @@
+#include "hole_fill.h"
+
+#include "pipeline.h"
+
+#include <vcg_ext/curvature_colormap.h>
+
+#include <QColor>
+#include <QDir>
+#include <QPainter>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <sstream>
+
+namespace curvature_inpaint {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double Since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+/// What FillHoles appends to the mesh, so a failure can take it back out exactly.
+class MeshCheckpoint {
+public:
+  explicit MeshCheckpoint(CMeshO& m) : m_(m), vn_(m.vert.size()), fn_(m.face.size()) {
+    for (const auto& f : m.face) selected_.push_back(f.IsS());
+  }
+  void Restore() {
+    for (size_t f = fn_; f < m_.face.size(); ++f)
+      if (!m_.face[f].IsD()) vcg::tri::Allocator<CMeshO>::DeleteFace(m_, m_.face[f]);
+    for (size_t v = vn_; v < m_.vert.size(); ++v)
+      if (!m_.vert[v].IsD()) vcg::tri::Allocator<CMeshO>::DeleteVertex(m_, m_.vert[v]);
+    vcg::tri::Allocator<CMeshO>::CompactEveryVector(m_);
+    for (size_t f = 0; f < fn_; ++f) selected_[f] ? m_.face[f].SetS() : m_.face[f].ClearS();
+    vcg::tri::UpdateBounding<CMeshO>::Box(m_);
+  }
+
+private:
+  CMeshO& m_;
+  size_t vn_, fn_;
+  std::vector<char> selected_;
+};
+
+/// The colour-map value of the variation at (u, v), bilinear between pixel centres.
+double SampleValue(const QImage& img, const Eigen::Vector2d& uv) {
+  const double x = std::max(0.0, std::min(img.width() - 1.0, uv.x() * img.width() - 0.5));
+  const double y = std::max(0.0, std::min(img.height() - 1.0, (1 - uv.y()) * img.height() - 0.5));
+  const int x0 = int(x), y0 = int(y);
+  const int x1 = std::min(x0 + 1, img.width() - 1), y1 = std::min(y0 + 1, img.height() - 1);
+  const double fx = x - x0, fy = y - y0;
+  auto value = [&](int px, int py) {
+    const QRgb c = img.pixel(px, py);
+    return vcg_ext::CurvatureColormap::Invert(Eigen::Vector3d(qRed(c), qGreen(c), qBlue(c))).t;
+  };
+  return (1 - fy) * ((1 - fx) * value(x0, y0) + fx * value(x1, y0)) +
+         fy * ((1 - fx) * value(x0, y1) + fx * value(x1, y1));
+}
+
+/// Fill triangles whose orientation the deformation reversed.
+int Folded(const std::vector<Eigen::Vector3d>& before, const std::vector<Eigen::Vector3d>& after,
+           const vcg_ext::PatchMesh& patch) {
+  int folded = 0;
+  for (size_t f = 0; f < patch.triangles.size(); ++f) {
+    if (!patch.is_fill[f]) continue;
+    const auto& t = patch.triangles[f];
+    const Eigen::Vector3d a = vcg_ext::TriangleNormal(before[t[0]], before[t[1]], before[t[2]]);
+    const Eigen::Vector3d b = vcg_ext::TriangleNormal(after[t[0]], after[t[1]], after[t[2]]);
+    folded += a.dot(b) <= 0;
+  }
+  return folded;
+}
+
+void SavePng(const QImage& image, const std::string& path) {
+  if (!image.save(QString::fromStdString(path), "PNG")) throw std::runtime_error("cannot write " + path);
+}
+
+} // namespace
+
+double ScoreVariation(const QImage& variation, const vcg_ext::CurvatureImage& image) {
+  const int n = image.size;
+  std::vector<double> value(size_t(n) * n);
+  std::vector<double> known;
+  double palette = 0;
+  int hole_pixels = 0;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const QRgb c = variation.pixel(x, y);
+      const auto inv = vcg_ext::CurvatureColormap::Invert(Eigen::Vector3d(qRed(c), qGreen(c), qBlue(c)));
+      value[size_t(y) * n + x] = inv.t;
+      if (image.hole[size_t(y) * n + x]) palette += inv.distance, ++hole_pixels;
+      else known.push_back(inv.t);
+    }
+  if (hole_pixels == 0 || known.empty()) return 0;
+  std::sort(known.begin(), known.end());
+  const double lo = known[known.size() / 20] - 0.05, hi = known[known.size() * 19 / 20] + 0.05;
+  double jump = 0, outside = 0;
+  int border = 0;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const size_t i = size_t(y) * n + x;
+      if (!image.hole[i]) continue;
+      if (value[i] < lo || value[i] > hi) ++outside;
+      for (int k = 0; k < 4; ++k) {
+        const int nx = x + (k == 0) - (k == 1), ny = y + (k == 2) - (k == 3);
+        if (nx < 0 || ny < 0 || nx >= n || ny >= n || image.hole[size_t(ny) * n + nx]) continue;
+        jump += std::abs(value[i] - value[size_t(ny) * n + nx]);
+        ++border;
+      }
+    }
+  const double continuity = border ? jump / border : 0;
+  return -(continuity + palette / hole_pixels / 255.0 + 0.5 * outside / hole_pixels);
+}
+
+HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackPos* cb) {
+  if (params.mode != "direct" && params.mode != "paper")
+    throw std::runtime_error("unknown mode \"" + params.mode + "\" (direct or paper)");
+  if (!params.images_dir.empty() && !QDir().mkpath(QString::fromStdString(params.images_dir)))
+    throw std::runtime_error("cannot create " + params.images_dir);
+  MeshCheckpoint checkpoint(m);
+  HoleFillResult result;
+  CurvatureImagesParams ip = params.images;
+  ip.color_vertices = false;
+  const auto t0 = Clock::now();
+  CurvatureImagesResult images = ComputeCurvatureImages(m, ip, cb);
+  const double images_s = Since(t0);
+  result.coarse = images.coarse;
+  try {
+    InpaintParams inpaint = params.inpaint;
+    int progress = 0;
+    if (cb) inpaint.http.cancelled = [cb, &progress] { return !cb(progress, "Curvature Inpaint: waiting for the inpainter"); };
+    std::vector<QImage> montage_rows;
+    for (size_t k = 0; k < images.holes.size(); ++k) {
+      const HoleImage& hi = images.holes[k];
+      HoleFillReport report;
+      report.hole = hi.hole;
+      report.boundary_edges = result.coarse.holes[hi.hole].boundary_edges;
+      report.new_vertices = int(result.coarse.holes[hi.hole].new_vertices.size());
+      report.coarse_s = result.coarse.holes[hi.hole].seconds;
+      report.images_s = hi.seconds;
+      progress = int(100.0 * k / images.holes.size());
+      if (!hi.problem.empty()) {
+        report.problem = hi.problem;
+        result.holes.push_back(report);
+        continue;
+      }
+      if (cb && !cb(progress, ("Curvature Inpaint: inpainting hole " + std::to_string(k + 1)).c_str()))
+        throw vcg_ext::CancelledError();
+      auto t = Clock::now();
+      const QImage image = ToQImage(hi.image, false), mask = MaskImage(hi.image);
+      const std::vector<QImage> variations = Inpaint(image, mask, inpaint);
+      report.inpaint_s = Since(t);
+      for (const QImage& v : variations) report.scores.push_back(ScoreVariation(v, hi.image));
+      report.pick = params.pick > 0 ? std::min(params.pick, int(variations.size()))
+                                    : int(std::max_element(report.scores.begin(), report.scores.end()) -
+                                          report.scores.begin()) + 1;
+      const QImage& chosen = variations[report.pick - 1];
+
+      t = Clock::now();
+      std::vector<char> free(hi.patch.points.size(), 1);
+      for (size_t f = 0; f < hi.patch.triangles.size(); ++f)
+        if (!hi.patch.is_fill[f])
+          for (int v : hi.patch.triangles[f]) free[v] = 0;
+      std::vector<double> target(hi.patch.points.size(), 0.5);
+      for (size_t i = 0; i < target.size(); ++i)
+        if (free[i]) target[i] = SampleValue(chosen, hi.uv.uv[i]);
+      std::vector<Eigen::Vector3d> points = hi.patch.points;
+      vcg_ext::DeformationResult dr;
+      if (params.mode == "direct") {
+        // The image's curvature comes from APSS fits several rings wide, the solve's from the
+        // cotangent Laplacian: give the solve the coarse patch's own discrete curvature plus
+        // the change the inpainted image asks for, so an unchanged image leaves it unchanged.
+        std::vector<double> h = vcg_ext::DiscreteMeanCurvature(hi.patch.points, hi.patch.triangles);
+        for (size_t i = 0; i < h.size(); ++i) h[i] += 2 * hi.scale * (target[i] - hi.value[i]);
+        dr = vcg_ext::DeformToCurvatureDirect(points, hi.patch.triangles, free, h, params.direct);
+      } else {
+        dr = vcg_ext::DeformToCurvaturePaper(points, hi.patch.triangles, free, target, hi.scale, params.paper);
+      }
+      // Back off towards the coarse fill while the deformation folds a triangle over.
+      for (int backoff = 0; dr.solved && Folded(hi.patch.points, points, hi.patch) > 0; ++backoff) {
+        if (backoff == 4) {
+          dr.solved = false;
+          break;
+        }
+        for (size_t i = 0; i < points.size(); ++i) points[i] = hi.patch.points[i] + 0.5 * (points[i] - hi.patch.points[i]);
+      }
+      report.deform_s = Since(t);
+      report.iterations = dr.iterations;
+      report.differing = dr.differing;
+      report.max_move = dr.max_move;
+      if (!dr.solved) {
+        report.problem = "the deformation would fold the patch; it keeps its coarse fill";
+        result.holes.push_back(report);
+        continue;
+      }
+      for (size_t i = 0; i < points.size(); ++i)
+        if (free[i]) m.vert[hi.patch.vertices[i]].P() = result.coarse.box.FromUnit<Scalarm>(points[i]);
+
+      if (!params.images_dir.empty()) {
+        const std::string base = params.images_dir + "/hole_" + std::to_string(k + 1);
+        SavePng(image, base + "_coarse.png");
+        SavePng(mask, base + "_mask.png");
+        for (size_t j = 0; j < variations.size(); ++j)
+          SavePng(variations[j], base + "_variation_" + std::to_string(j + 1) + ".png");
+        // The final curvature, normalized like the coarse image.
+        std::vector<Eigen::Vector3d> normals = vcg_ext::detail::VertexNormals(points, hi.patch.triangles);
+        std::vector<int> query(points.size());
+        for (size_t i = 0; i < query.size(); ++i) query[i] = int(i);
+        const auto h = vcg_ext::ApssMeanCurvature(points, normals, query, params.images.apss);
+        std::vector<double> value(h.size(), 0.5);
+        for (size_t i = 0; i < h.size(); ++i)
+          if (std::isfinite(h[i])) value[i] = std::max(0.0, std::min(1.0, 0.5 + 0.5 * h[i] / hi.scale));
+        const QImage final_image = ToQImage(
+            vcg_ext::RasterizeCurvature(hi.uv.uv, value, hi.patch.triangles, hi.patch.is_fill, hi.image.size), false);
+        SavePng(final_image, base + "_final.png");
+        // Montage row: coarse, mask, variations (the pick framed), final.
+        const int cell = 192, pad = 6, cells = int(variations.size()) + 3;
+        QImage row(cells * (cell + pad) + pad, cell + 2 * pad, QImage::Format_RGB32);
+        row.fill(QColor(40, 40, 48));
+        QPainter painter(&row);
+        std::vector<QImage> tiles{image, mask};
+        tiles.insert(tiles.end(), variations.begin(), variations.end());
+        tiles.push_back(final_image);
+        for (int c = 0; c < cells; ++c) {
+          const QRect r(pad + c * (cell + pad), pad, cell, cell);
+          if (c == report.pick + 1) painter.fillRect(r.adjusted(-pad / 2, -pad / 2, pad / 2, pad / 2), QColor(255, 255, 255));
+          painter.drawImage(r, tiles[c]);
+        }
+        painter.end();
+        montage_rows.push_back(row);
+      }
+      result.holes.push_back(report);
+    }
+    if (!montage_rows.empty()) {
+      int w = 0, h = 0;
+      for (const auto& r : montage_rows) w = std::max(w, r.width()), h += r.height();
+      QImage montage(w, h, QImage::Format_RGB32);
+      montage.fill(QColor(40, 40, 48));
+      QPainter painter(&montage);
+      int y = 0;
+      for (const auto& r : montage_rows) painter.drawImage(0, y, r), y += r.height();
+      painter.end();
+      SavePng(montage, params.images_dir + "/montage.png");
+    }
+  } catch (...) {
+    checkpoint.Restore();
+    throw;
+  }
+  (void)images_s;
+  // Normals of the moved fill.
+  for (const auto& h : result.coarse.holes)
+    for (int f : h.new_faces) m.face[f].N() = vcg::TriangleNormal(m.face[f]).Normalize();
+  for (const auto& h : result.coarse.holes)
+    for (int v : h.new_vertices) m.vert[v].N().SetZero();
+  for (const auto& h : result.coarse.holes)
+    for (int f : h.new_faces)
+      for (int k = 0; k < 3; ++k) m.face[f].V(k)->N() += vcg::TriangleNormal(m.face[f]);
+  for (const auto& h : result.coarse.holes)
+    for (int v : h.new_vertices) m.vert[v].N().Normalize();
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+  return result;
+}
+
+std::vector<std::string> DescribeHoleFill(const HoleFillResult& result) {
+  std::vector<std::string> lines = DescribeCoarseFill(result.coarse);
+  char buf[512];
+  for (size_t k = 0; k < result.holes.size(); ++k) {
+    const auto& r = result.holes[k];
+    if (!r.problem.empty()) {
+      std::snprintf(buf, sizeof buf, "detail %zu: none: %s", k + 1, r.problem.c_str());
+    } else {
+      std::string scores;
+      for (double s : r.scores) scores += (scores.empty() ? "" : " ") + std::to_string(s).substr(0, 6);
+      std::snprintf(buf, sizeof buf,
+                    "detail %zu: %d edges, variation %d of %zu (scores %s), %d deformation steps, "
+                    "images %.0f ms, inpaint %.0f ms, deform %.0f ms",
+                    k + 1, r.boundary_edges, r.pick, r.scores.size(), scores.c_str(), r.iterations,
+                    1000 * r.images_s, 1000 * r.inpaint_s, 1000 * r.deform_s);
+    }
+    lines.emplace_back(buf);
+  }
+  return lines;
+}
+
+std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParams& params) {
+  std::ostringstream o;
+  o.precision(6);
+  o << "{\n  \"backend\": \"" << params.inpaint.backend << "\",\n  \"mode\": \"" << params.mode
+    << "\",\n  \"holes\": [";
+  for (size_t k = 0; k < result.holes.size(); ++k) {
+    const auto& r = result.holes[k];
+    o << (k ? ",\n" : "\n") << "    {\"hole\": " << k + 1 << ", \"boundary_edges\": " << r.boundary_edges
+      << ", \"new_vertices\": " << r.new_vertices << ", \"scores\": [";
+    for (size_t j = 0; j < r.scores.size(); ++j) o << (j ? ", " : "") << r.scores[j];
+    o << "], \"pick\": " << r.pick << ", \"iterations\": " << r.iterations << ", \"max_move\": " << r.max_move
+      << ", \"seconds\": {\"coarse\": " << r.coarse_s << ", \"images\": " << r.images_s
+      << ", \"inpaint\": " << r.inpaint_s << ", \"deform\": " << r.deform_s << "}";
+    if (!r.problem.empty()) {
+      std::string p = r.problem;
+      for (auto& c : p)
+        if (c == '"' || c == '\\') c = '\'';
+      o << ", \"problem\": \"" << p << "\"";
+    }
+    o << "}";
+  }
+  o << "\n  ]\n}\n";
+  return o.str();
+}
+
+} // namespace curvature_inpaint

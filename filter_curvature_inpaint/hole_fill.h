@@ -1,0 +1,58 @@
+// The whole method (stages 0-9): coarse fill, curvature images, inpainting, choice of a
+// variation, and deformation of each patch to the chosen image. The mesh changes only when
+// every stage has succeeded.
+#pragma once
+
+#include "curvature_images.h"
+#include "inpaint/inpainter.h"
+
+#include <vcg_ext/curvature_deformation.h>
+
+#include <string>
+#include <vector>
+
+namespace curvature_inpaint {
+
+struct HoleFillParams {
+  CurvatureImagesParams images;
+  InpaintParams inpaint;
+  std::string mode = "direct"; ///< "direct" or "paper"
+  int pick = 0;                ///< 0: the best score; k >= 1: variation k of every hole
+  vcg_ext::DirectDeformationParams direct;
+  vcg_ext::PaperDeformationParams paper;
+  std::string images_dir;      ///< where to write every hole's images; empty: nowhere
+};
+
+struct HoleFillReport {
+  int hole = 0;                 ///< index into the coarse result's holes
+  int boundary_edges = 0;
+  int new_vertices = 0;
+  std::vector<double> scores;   ///< per variation: higher is better
+  int pick = 0;                 ///< 1-based
+  int iterations = 0;           ///< deformation solves (direct) or steps (paper)
+  std::vector<int> differing;   ///< paper mode: differing vertices per step
+  double max_move = 0;          ///< unit-box units
+  double coarse_s = 0, images_s = 0, inpaint_s = 0, deform_s = 0;
+  std::string problem;          ///< why the hole kept its coarse fill; empty if none
+};
+
+struct HoleFillResult {
+  vcg_ext::CoarseFillResult coarse;
+  std::vector<HoleFillReport> holes;
+};
+
+/// Fills the holes of `m` with detail. Throws InvalidMeshError, InpaintError (a backend
+/// failed), CancelledError or std::runtime_error, with `m` exactly as it was.
+HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackPos* cb = nullptr);
+
+/// Scores a variation without ground truth (higher is better): how continuously the value
+/// field crosses the hole's border, how close the hole's colours stay to the palette, and how
+/// far its values leave the known ring's range.
+double ScoreVariation(const QImage& variation, const vcg_ext::CurvatureImage& image);
+
+std::vector<std::string> DescribeHoleFill(const HoleFillResult& result);
+
+/// The report as JSON (no keys, no URLs with credentials).
+std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParams& params);
+
+} // namespace curvature_inpaint
