@@ -1,13 +1,14 @@
 #include "filter_curvature_inpaint.h"
 
 #include "curvature_images.h"
+#include "hole_fill.h"
 #include "pipeline.h"
 
 #include <QDir>
 #include <QFileInfo>
 
 FilterCurvatureInpaintPlugin::FilterCurvatureInpaintPlugin() {
-  typeList << FP_COARSE_HOLE_FILL << FP_CURVATURE_IMAGES;
+  typeList << FP_COARSE_HOLE_FILL << FP_CURVATURE_IMAGES << FP_HOLE_FILL;
   for (FilterIDType t : types()) actionList << new QAction(filterName(t), this);
 }
 
@@ -21,6 +22,8 @@ QString FilterCurvatureInpaintPlugin::filterName(FilterIDType filter) const {
     return "Curvature Inpaint: Coarse Hole Fill";
   case FP_CURVATURE_IMAGES:
     return "Curvature Inpaint: Curvature Images";
+  case FP_HOLE_FILL:
+    return "Curvature Inpaint Hole Fill";
   }
   return {};
 }
@@ -43,11 +46,21 @@ QString FilterCurvatureInpaintPlugin::filterInfo(FilterIDType filter) const {
            "given (the patch flattened onto a square by mean value coordinates), the same "
            "image with the hole transparent, the hole's black and white mask, and a JSON file "
            "with the patch, its UV coordinates and the normalization.";
+  case FP_HOLE_FILL:
+    return "Fills the holes of the mesh with detail (\"Deep learning of curvature features for "
+           "shape completion\"): a coarse fill, the mean curvature of a patch around each hole "
+           "painted as an image, that image completed by an inpainter (the embedded one works "
+           "offline; DALL-E 2 / gpt-image-1, Stable Diffusion web UIs, Stability AI and ComfyUI "
+           "are options, their keys read from OPENAI_API_KEY, STABILITY_API_KEY, SD_WEBUI_AUTH), "
+           "the best-scored of its variations chosen, and the patch deformed until its "
+           "curvature matches. The mesh changes only when every stage succeeds.";
   }
   return {};
 }
 
 MeshFilterInterface::FilterClass FilterCurvatureInpaintPlugin::getClass(QAction* a) {
+  if (ID(a) == FP_HOLE_FILL)
+    return FilterClass(MeshFilterInterface::Remeshing + MeshFilterInterface::Cleaning);
   if (ID(a) == FP_CURVATURE_IMAGES)
     return FilterClass(MeshFilterInterface::Remeshing + MeshFilterInterface::VertexColoring);
   return FilterClass(MeshFilterInterface::Remeshing + MeshFilterInterface::Cleaning);
@@ -115,6 +128,54 @@ void FilterCurvatureInpaintPlugin::initParameterSet(QAction* action, MeshModel&,
                             "colour the mesh."));
     break;
   }
+  case FP_HOLE_FILL: {
+    const curvature_inpaint::HoleFillParams d;
+    QStringList backends;
+    for (const auto& b : curvature_inpaint::InpaintBackends())
+      backends << QString::fromStdString(b);
+    par.addParam(
+        RichEnum("Backend", 0, backends, "Inpainting backend",
+                 "embedded: offline, the default. openai: DALL-E 2 or gpt-image-1 (key in "
+                 "OPENAI_API_KEY). sd-webui: AUTOMATIC1111, Forge or SD.Next (Basic auth "
+                 "from SD_WEBUI_AUTH). stability: Stability AI (STABILITY_API_KEY). comfyui: "
+                 "a ComfyUI server with the shipped workflow."));
+    par.addParam(RichString("ServerUrl", "", "Server URL",
+                            "The service's address; empty: the backend's default (OpenAI's and "
+                            "Stability's public APIs, http://127.0.0.1:7860 for sd-webui, "
+                            "http://127.0.0.1:8188 for ComfyUI)."));
+    par.addParam(RichString("Model", "", "Model", "openai: dall-e-2 (default) or gpt-image-1."));
+    par.addParam(
+        RichString("Prompt", "", "Prompt",
+                   "Empty: the paper's prompt for the backend (\"fill in the blanks\" for "
+                   "DALL-E 2; the curvature colour map description for Stable Diffusion)."));
+    par.addParam(RichInt("Variations", d.inpaint.variations, "Variations",
+                         "How many completions of each hole's image to ask for (1-10)."));
+    par.addParam(
+        RichInt("Variation", 0, "Variation to use",
+                "0: the one with the best score (continuity across the hole's border, "
+                "colours on the palette, values in the surroundings' range); k: the k-th."));
+    par.addParam(
+        RichFloat("Similitude", float(d.paper.similitude), "Similitude (paper mode)",
+                  "Colour difference (0-255, any channel) above which a vertex is moved."));
+    par.addParam(RichFloat("TransformationConstant", float(d.paper.transformation_constant),
+                           "Transformation constant (paper mode)",
+                           "How far a differing vertex moves per step, in the unit box."));
+    par.addParam(
+        RichEnum("Mode", 0,
+                 QStringList() << "direct"
+                               << "paper",
+                 "Deformation",
+                 "direct: a few sparse solves for the positions whose mean curvature "
+                 "matches the image. paper: the paper's small steps of control vertices."));
+    par.addParam(RichInt("MaxHoleSize", 0, "Max size to be closed",
+                         "Holes with more boundary edges stay open. 0: every hole."));
+    par.addParam(RichInt("ImageSize", 512, "Image size (pixels)",
+                         "Side of the curvature images given to the inpainter."));
+    par.addParam(RichString("OutputFolder", "", "Output folder",
+                            "Where to write every hole's images (coarse, mask, variations, final) "
+                            "and a montage; empty: nowhere."));
+    break;
+  }
   }
 }
 
@@ -129,6 +190,8 @@ bool FilterCurvatureInpaintPlugin::applyFilter(QAction* action, MeshDocument& md
     return applyCoarseHoleFill(*md.mm(), par, cb);
   case FP_CURVATURE_IMAGES:
     return applyCurvatureImages(*md.mm(), par, cb);
+  case FP_HOLE_FILL:
+    return applyHoleFill(*md.mm(), par, cb);
   }
   return false;
 }
@@ -183,6 +246,35 @@ bool FilterCurvatureInpaintPlugin::applyCurvatureImages(MeshModel& mm, const Ric
     return false;
   }
   mm.updateDataMask(MeshModel::MM_VERTCOLOR);
+  mm.UpdateBoxAndNormals();
+  return true;
+}
+
+bool FilterCurvatureInpaintPlugin::applyHoleFill(MeshModel& mm, const RichParameterList& par,
+                                                 vcg::CallBackPos* cb) {
+  curvature_inpaint::HoleFillParams p;
+  p.inpaint.backend = curvature_inpaint::InpaintBackends().at(std::max(
+      0, std::min(int(curvature_inpaint::InpaintBackends().size()) - 1, par.getEnum("Backend"))));
+  p.inpaint.url = par.getString("ServerUrl").trimmed().toStdString();
+  p.inpaint.model = par.getString("Model").trimmed().toStdString();
+  p.inpaint.prompt = par.getString("Prompt").toStdString();
+  p.inpaint.variations = std::max(1, std::min(10, par.getInt("Variations")));
+  p.pick = std::max(0, par.getInt("Variation"));
+  p.paper.similitude = std::max(0.0f, par.getFloat("Similitude"));
+  p.paper.transformation_constant = std::max(0.0f, par.getFloat("TransformationConstant"));
+  p.mode = par.getEnum("Mode") == 1 ? "paper" : "direct";
+  p.images.coarse.max_hole_edges = std::max(0, par.getInt("MaxHoleSize"));
+  p.images.image_size = std::max(16, std::min(4096, par.getInt("ImageSize")));
+  p.images_dir = par.getString("OutputFolder").trimmed().toStdString();
+  try {
+    const auto result = curvature_inpaint::FillHoles(mm.cm, p, cb);
+    for (const std::string& line : curvature_inpaint::DescribeHoleFill(result)) Log(line);
+  } catch (const std::exception& e) {
+    errorMessage =
+        QString("Curvature Inpaint Hole Fill: ") + e.what() + ". The mesh was not changed.";
+    Log(GLLogStream::WARNING, errorMessage.toStdString());
+    return false;
+  }
   mm.UpdateBoxAndNormals();
   return true;
 }

@@ -10,7 +10,7 @@ class FilterCurvatureInpaintPlugin : public QObject, public MeshFilterInterface 
   Q_INTERFACES(MeshFilterInterface)
 
 public:
-  enum { FP_COARSE_HOLE_FILL, FP_CURVATURE_IMAGES };
+  enum { FP_COARSE_HOLE_FILL, FP_CURVATURE_IMAGES, FP_HOLE_FILL };
 
   FilterCurvatureInpaintPlugin();
 
@@ -29,4 +29,5 @@ public:
 private:
   bool applyCoarseHoleFill(MeshModel& mm, const RichParameterList& par, vcg::CallBackPos* cb);
   bool applyCurvatureImages(MeshModel& mm, const RichParameterList& par, vcg::CallBackPos* cb);
+  bool applyHoleFill(MeshModel& mm, const RichParameterList& par, vcg::CallBackPos* cb);
 };

@@ -18,7 +18,9 @@ namespace curvature_inpaint {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double Since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double Since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 /// What FillHoles appends to the mesh, so a failure can take it back out exactly.
 class MeshCheckpoint {
@@ -72,7 +74,8 @@ int Folded(const std::vector<Eigen::Vector3d>& before, const std::vector<Eigen::
 }
 
 void SavePng(const QImage& image, const std::string& path) {
-  if (!image.save(QString::fromStdString(path), "PNG")) throw std::runtime_error("cannot write " + path);
+  if (!image.save(QString::fromStdString(path), "PNG"))
+    throw std::runtime_error("cannot write " + path);
 }
 
 } // namespace
@@ -86,10 +89,13 @@ double ScoreVariation(const QImage& variation, const vcg_ext::CurvatureImage& im
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x) {
       const QRgb c = variation.pixel(x, y);
-      const auto inv = vcg_ext::CurvatureColormap::Invert(Eigen::Vector3d(qRed(c), qGreen(c), qBlue(c)));
+      const auto inv =
+          vcg_ext::CurvatureColormap::Invert(Eigen::Vector3d(qRed(c), qGreen(c), qBlue(c)));
       value[size_t(y) * n + x] = inv.t;
-      if (image.hole[size_t(y) * n + x]) palette += inv.distance, ++hole_pixels;
-      else known.push_back(inv.t);
+      if (image.hole[size_t(y) * n + x])
+        palette += inv.distance, ++hole_pixels;
+      else
+        known.push_back(inv.t);
     }
   if (hole_pixels == 0 || known.empty()) return 0;
   std::sort(known.begin(), known.end());
@@ -128,7 +134,10 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
   try {
     InpaintParams inpaint = params.inpaint;
     int progress = 0;
-    if (cb) inpaint.http.cancelled = [cb, &progress] { return !cb(progress, "Curvature Inpaint: waiting for the inpainter"); };
+    if (cb)
+      inpaint.http.cancelled = [cb, &progress] {
+        return !cb(progress, "Curvature Inpaint: waiting for the inpainter");
+      };
     std::vector<QImage> montage_rows;
     for (size_t k = 0; k < images.holes.size(); ++k) {
       const HoleImage& hi = images.holes[k];
@@ -144,16 +153,19 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
         result.holes.push_back(report);
         continue;
       }
-      if (cb && !cb(progress, ("Curvature Inpaint: inpainting hole " + std::to_string(k + 1)).c_str()))
+      if (cb &&
+          !cb(progress, ("Curvature Inpaint: inpainting hole " + std::to_string(k + 1)).c_str()))
         throw vcg_ext::CancelledError();
       auto t = Clock::now();
       const QImage image = ToQImage(hi.image, false), mask = MaskImage(hi.image);
       const std::vector<QImage> variations = Inpaint(image, mask, inpaint);
       report.inpaint_s = Since(t);
       for (const QImage& v : variations) report.scores.push_back(ScoreVariation(v, hi.image));
-      report.pick = params.pick > 0 ? std::min(params.pick, int(variations.size()))
-                                    : int(std::max_element(report.scores.begin(), report.scores.end()) -
-                                          report.scores.begin()) + 1;
+      report.pick = params.pick > 0
+                        ? std::min(params.pick, int(variations.size()))
+                        : int(std::max_element(report.scores.begin(), report.scores.end()) -
+                              report.scores.begin()) +
+                              1;
       const QImage& chosen = variations[report.pick - 1];
 
       t = Clock::now();
@@ -174,7 +186,8 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
         for (size_t i = 0; i < h.size(); ++i) h[i] += 2 * hi.scale * (target[i] - hi.value[i]);
         dr = vcg_ext::DeformToCurvatureDirect(points, hi.patch.triangles, free, h, params.direct);
       } else {
-        dr = vcg_ext::DeformToCurvaturePaper(points, hi.patch.triangles, free, target, hi.scale, params.paper);
+        dr = vcg_ext::DeformToCurvaturePaper(points, hi.patch.triangles, free, target, hi.scale,
+                                             params.paper);
       }
       // Back off towards the coarse fill while the deformation folds a triangle over.
       for (int backoff = 0; dr.solved && Folded(hi.patch.points, points, hi.patch) > 0; ++backoff) {
@@ -182,7 +195,8 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
           dr.solved = false;
           break;
         }
-        for (size_t i = 0; i < points.size(); ++i) points[i] = hi.patch.points[i] + 0.5 * (points[i] - hi.patch.points[i]);
+        for (size_t i = 0; i < points.size(); ++i)
+          points[i] = hi.patch.points[i] + 0.5 * (points[i] - hi.patch.points[i]);
       }
       report.deform_s = Since(t);
       report.iterations = dr.iterations;
@@ -194,7 +208,8 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
         continue;
       }
       for (size_t i = 0; i < points.size(); ++i)
-        if (free[i]) m.vert[hi.patch.vertices[i]].P() = result.coarse.box.FromUnit<Scalarm>(points[i]);
+        if (free[i])
+          m.vert[hi.patch.vertices[i]].P() = result.coarse.box.FromUnit<Scalarm>(points[i]);
 
       if (!params.images_dir.empty()) {
         const std::string base = params.images_dir + "/hole_" + std::to_string(k + 1);
@@ -203,15 +218,19 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
         for (size_t j = 0; j < variations.size(); ++j)
           SavePng(variations[j], base + "_variation_" + std::to_string(j + 1) + ".png");
         // The final curvature, normalized like the coarse image.
-        std::vector<Eigen::Vector3d> normals = vcg_ext::detail::VertexNormals(points, hi.patch.triangles);
+        std::vector<Eigen::Vector3d> normals =
+            vcg_ext::detail::VertexNormals(points, hi.patch.triangles);
         std::vector<int> query(points.size());
         for (size_t i = 0; i < query.size(); ++i) query[i] = int(i);
         const auto h = vcg_ext::ApssMeanCurvature(points, normals, query, params.images.apss);
         std::vector<double> value(h.size(), 0.5);
         for (size_t i = 0; i < h.size(); ++i)
-          if (std::isfinite(h[i])) value[i] = std::max(0.0, std::min(1.0, 0.5 + 0.5 * h[i] / hi.scale));
-        const QImage final_image = ToQImage(
-            vcg_ext::RasterizeCurvature(hi.uv.uv, value, hi.patch.triangles, hi.patch.is_fill, hi.image.size), false);
+          if (std::isfinite(h[i]))
+            value[i] = std::max(0.0, std::min(1.0, 0.5 + 0.5 * h[i] / hi.scale));
+        const QImage final_image =
+            ToQImage(vcg_ext::RasterizeCurvature(hi.uv.uv, value, hi.patch.triangles,
+                                                 hi.patch.is_fill, hi.image.size),
+                     false);
         SavePng(final_image, base + "_final.png");
         // Montage row: coarse, mask, variations (the pick framed), final.
         const int cell = 192, pad = 6, cells = int(variations.size()) + 3;
@@ -223,7 +242,9 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
         tiles.push_back(final_image);
         for (int c = 0; c < cells; ++c) {
           const QRect r(pad + c * (cell + pad), pad, cell, cell);
-          if (c == report.pick + 1) painter.fillRect(r.adjusted(-pad / 2, -pad / 2, pad / 2, pad / 2), QColor(255, 255, 255));
+          if (c == report.pick + 1)
+            painter.fillRect(r.adjusted(-pad / 2, -pad / 2, pad / 2, pad / 2),
+                             QColor(255, 255, 255));
           painter.drawImage(r, tiles[c]);
         }
         painter.end();
@@ -270,7 +291,8 @@ std::vector<std::string> DescribeHoleFill(const HoleFillResult& result) {
       std::snprintf(buf, sizeof buf, "detail %zu: none: %s", k + 1, r.problem.c_str());
     } else {
       std::string scores;
-      for (double s : r.scores) scores += (scores.empty() ? "" : " ") + std::to_string(s).substr(0, 6);
+      for (double s : r.scores)
+        scores += (scores.empty() ? "" : " ") + std::to_string(s).substr(0, 6);
       std::snprintf(buf, sizeof buf,
                     "detail %zu: %d edges, variation %d of %zu (scores %s), %d deformation steps, "
                     "images %.0f ms, inpaint %.0f ms, deform %.0f ms",
@@ -289,12 +311,14 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
     << "\",\n  \"holes\": [";
   for (size_t k = 0; k < result.holes.size(); ++k) {
     const auto& r = result.holes[k];
-    o << (k ? ",\n" : "\n") << "    {\"hole\": " << k + 1 << ", \"boundary_edges\": " << r.boundary_edges
-      << ", \"new_vertices\": " << r.new_vertices << ", \"scores\": [";
+    o << (k ? ",\n" : "\n") << "    {\"hole\": " << k + 1
+      << ", \"boundary_edges\": " << r.boundary_edges << ", \"new_vertices\": " << r.new_vertices
+      << ", \"scores\": [";
     for (size_t j = 0; j < r.scores.size(); ++j) o << (j ? ", " : "") << r.scores[j];
-    o << "], \"pick\": " << r.pick << ", \"iterations\": " << r.iterations << ", \"max_move\": " << r.max_move
-      << ", \"seconds\": {\"coarse\": " << r.coarse_s << ", \"images\": " << r.images_s
-      << ", \"inpaint\": " << r.inpaint_s << ", \"deform\": " << r.deform_s << "}";
+    o << "], \"pick\": " << r.pick << ", \"iterations\": " << r.iterations
+      << ", \"max_move\": " << r.max_move << ", \"seconds\": {\"coarse\": " << r.coarse_s
+      << ", \"images\": " << r.images_s << ", \"inpaint\": " << r.inpaint_s
+      << ", \"deform\": " << r.deform_s << "}";
     if (!r.problem.empty()) {
       std::string p = r.problem;
       for (auto& c : p)

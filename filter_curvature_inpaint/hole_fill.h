@@ -20,20 +20,20 @@ struct HoleFillParams {
   int pick = 0;                ///< 0: the best score; k >= 1: variation k of every hole
   vcg_ext::DirectDeformationParams direct;
   vcg_ext::PaperDeformationParams paper;
-  std::string images_dir;      ///< where to write every hole's images; empty: nowhere
+  std::string images_dir; ///< where to write every hole's images; empty: nowhere
 };
 
 struct HoleFillReport {
-  int hole = 0;                 ///< index into the coarse result's holes
+  int hole = 0; ///< index into the coarse result's holes
   int boundary_edges = 0;
   int new_vertices = 0;
-  std::vector<double> scores;   ///< per variation: higher is better
-  int pick = 0;                 ///< 1-based
-  int iterations = 0;           ///< deformation solves (direct) or steps (paper)
-  std::vector<int> differing;   ///< paper mode: differing vertices per step
-  double max_move = 0;          ///< unit-box units
+  std::vector<double> scores; ///< per variation: higher is better
+  int pick = 0;               ///< 1-based
+  int iterations = 0;         ///< deformation solves (direct) or steps (paper)
+  std::vector<int> differing; ///< paper mode: differing vertices per step
+  double max_move = 0;        ///< unit-box units
   double coarse_s = 0, images_s = 0, inpaint_s = 0, deform_s = 0;
-  std::string problem;          ///< why the hole kept its coarse fill; empty if none
+  std::string problem; ///< why the hole kept its coarse fill; empty if none
 };
 
 struct HoleFillResult {

@@ -58,6 +58,22 @@ class MeshlabServer(TempDirTest):
                 self.assertTrue(0 <= v["u"] <= 1 and 0 <= v["v"] <= 1)
         self.assertEqual(info(out)["holes"], 0)
 
+    def test_hole_fill_script_fills_two_holes_and_keeps_the_rest_bit_for_bit(self):
+        from inpaint_test import read_binary_ply_xyz
+        once = self.punched("igea_190k.ply", 21537, 0.04, "once.ply")
+        twice = self.path("twice.ply")
+        r = run([TOOL, "punch", once, twice, "--seed-vertex", "60000", "--radius-frac", "0.03"])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(info(twice)["holes"], 2)
+        out = self.path("filled.ply")
+        r = self.meshlabserver(twice, out, os.path.join(SCRIPTS, "curvature_inpaint_hole_fill.mlx"))
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertIn("filled 2 of 2 holes", r.stdout + r.stderr)
+        self.assertEqual(info(out)["holes"], 0)
+        self.assertEqual(info(out)["non_manifold_edges"], 0)
+        before, after = read_binary_ply_xyz(twice), read_binary_ply_xyz(out)
+        self.assertEqual(after[:len(before)], before)
+
     def test_unwritable_output_folder_changes_nothing(self):
         src = self.punched("nefertiti.ply", 33416, 0.03)
         blocker = self.path("a-file")

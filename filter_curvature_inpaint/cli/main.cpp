@@ -232,7 +232,8 @@ int Fill(Args& args) {
   CMeshO m;
   const int mask = curvature_inpaint::LoadMesh(files[0], m);
   const auto result = curvature_inpaint::FillHoles(m, p, ProgressToStderr);
-  for (const auto& line : curvature_inpaint::DescribeHoleFill(result)) std::fprintf(stderr, "%s\n", line.c_str());
+  for (const auto& line : curvature_inpaint::DescribeHoleFill(result))
+    std::fprintf(stderr, "%s\n", line.c_str());
   curvature_inpaint::SaveMesh(files[1], m, mask);
   if (!report.empty()) {
     std::FILE* f = std::fopen(report.c_str(), "w");
