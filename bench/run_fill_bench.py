@@ -1,0 +1,46 @@
+#!/usr/bin/env python3
+"""The whole method against its own coarse fill on the public cases (embedded backend, both
+deformation modes). Distances as in run_coarse_bench.py.
+
+    python3 bench/run_fill_bench.py
+"""
+import os
+import re
+import shutil
+import tempfile
+import time
+
+from run_coarse_bench import BIN, SHARED, build, cases, dist, metrics, sh, table
+
+
+def main():
+    build()
+    tool = os.path.join(BIN, "curvature-inpaint")
+    tmp = tempfile.mkdtemp(prefix="fill-bench-")
+    rows = []
+    try:
+        for name, gt, seed, frac, given in cases():
+            inp = os.path.join(tmp, name + ".ply")
+            if given != "-":
+                shutil.copy(os.path.join(SHARED, given), inp)
+            else:
+                sh([tool, "punch", gt, inp, "--seed-vertex", seed, "--radius-frac", frac])
+            for label, args in (("coarse fill", ["coarse"]), ("fill, direct", ["fill", "--mode", "direct"]),
+                                ("fill, paper", ["fill", "--mode", "paper"])):
+                out = os.path.join(tmp, f"{name}_{label[-6:].strip()}.ply")
+                start = time.perf_counter()
+                r = sh([tool, args[0], inp, out] + args[1:])
+                seconds = time.perf_counter() - start
+                steps = re.findall(r"(\d+) deformation steps", r.stderr)
+                m = metrics(gt, inp, out)
+                rows.append(f"| {name} | {label} | {dist(m)} | {m['normal_deviation_deg']:.1f} | {m['holes_left']} | "
+                            f"{seconds:.2f} | {'+'.join(steps) or '-'} |")
+        table("The whole method (embedded backend) against its coarse fill",
+              ["case", "method", "ground truth → fill", "fill → ground truth", "normal deviation (°)",
+               "holes left", "process s", "deformation steps"], rows)
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    main()
