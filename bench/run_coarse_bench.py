@@ -111,6 +111,17 @@ def cases():
             yield name, os.path.join(SHARED, gt), seed, frac, given
 
 
+def case_input(tmp, name, gt, seed, frac, given):
+    """The case's mesh with its hole: the given open mesh, or the ground truth punched."""
+    inp = os.path.join(tmp, name + ".ply")
+    if given != "-":
+        shutil.copy(os.path.join(SHARED, given), inp)
+    else:
+        sh([os.path.join(BIN, "curvature-inpaint"), "punch", gt, inp, "--seed-vertex", seed,
+            "--radius-frac", frac])
+    return inp
+
+
 def dist(m):
     a, b = m["gt_to_result"], m["result_to_gt"]
     return f"{a['max']:.2f} / {a['rms']:.3f} | {b['max']:.2f} / {b['rms']:.3f}"
@@ -133,12 +144,7 @@ def main():
             f.write(CLOSE_HOLES)
         quality, speed, triang = [], [], []
         for name, gt, seed, frac, given in cases():
-            inp = os.path.join(tmp, name + ".ply")
-            if given != "-":
-                shutil.copy(os.path.join(SHARED, given), inp)
-            else:
-                sh([os.path.join(BIN, "curvature-inpaint"), "punch", gt, inp, "--seed-vertex", seed,
-                    "--radius-frac", frac])
+            inp = case_input(tmp, name, gt, seed, frac, given)
             edges = sh([os.path.join(BIN, "curvature-inpaint"), "info", inp]).stdout.split("hole_edges")[1].split()
             o, c, m = (os.path.join(tmp, f"{name}_{k}.ply") for k in ("ours", "cgal", "meshlab"))
             o_fill, o_wall, o_method = ours(inp, o)

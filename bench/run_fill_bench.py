@@ -10,7 +10,7 @@ import shutil
 import tempfile
 import time
 
-from run_coarse_bench import BIN, SHARED, build, cases, dist, metrics, sh, table
+from run_coarse_bench import BIN, SHARED, build, case_input, cases, dist, metrics, sh, table
 
 
 def main():
@@ -20,11 +20,7 @@ def main():
     rows = []
     try:
         for name, gt, seed, frac, given in cases():
-            inp = os.path.join(tmp, name + ".ply")
-            if given != "-":
-                shutil.copy(os.path.join(SHARED, given), inp)
-            else:
-                sh([tool, "punch", gt, inp, "--seed-vertex", seed, "--radius-frac", frac])
+            inp = case_input(tmp, name, gt, seed, frac, given)
             for label, args in (("coarse fill", ["coarse"]), ("fill, direct", ["fill", "--mode", "direct"]),
                                 ("fill, paper", ["fill", "--mode", "paper"])):
                 out = os.path.join(tmp, f"{name}_{label[-6:].strip()}.ply")

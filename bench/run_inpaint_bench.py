@@ -20,7 +20,7 @@ import sys
 import tempfile
 import time
 
-from run_coarse_bench import BIN, SHARED, build, cases, sh, table
+from run_coarse_bench import BIN, SHARED, build, case_input, cases, sh, table
 
 SIZE = 256
 
@@ -82,11 +82,7 @@ def main():
     rows, times = [], []
     try:
         for name, gt, seed, frac, given in cases():
-            inp = os.path.join(tmp, name + ".ply")
-            if given != "-":
-                shutil.copy(os.path.join(SHARED, given), inp)
-            else:
-                sh([tool, "punch", gt, inp, "--seed-vertex", seed, "--radius-frac", frac])
+            inp = case_input(tmp, name, gt, seed, frac, given)
             d = os.path.join(tmp, name)
             sh([bench, "ideal", gt, inp, d, str(SIZE)])
             for k in range(1, 10):

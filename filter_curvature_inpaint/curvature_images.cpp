@@ -118,9 +118,7 @@ void BuildHoleImage(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vcg_e
 CurvatureImagesResult ComputeCurvatureImages(CMeshO& m, const CurvatureImagesParams& params,
                                              vcg::CallBackPos* cb) {
   CurvatureImagesResult result;
-  const size_t vn = m.vert.size(), fn = m.face.size();
-  std::vector<char> selected(fn);
-  for (size_t f = 0; f < fn; ++f) selected[f] = m.face[f].IsS();
+  MeshCheckpoint checkpoint(m);
   result.coarse = CoarseFill(m, params.coarse, cb);
   try {
     const auto start = Clock::now();
@@ -152,14 +150,7 @@ CurvatureImagesResult ComputeCurvatureImages(CMeshO& m, const CurvatureImagesPar
       }
     }
   } catch (...) {
-    // Take the coarse fill back out: it only appended vertices and faces.
-    for (size_t f = fn; f < m.face.size(); ++f)
-      if (!m.face[f].IsD()) vcg::tri::Allocator<CMeshO>::DeleteFace(m, m.face[f]);
-    for (size_t v = vn; v < m.vert.size(); ++v)
-      if (!m.vert[v].IsD()) vcg::tri::Allocator<CMeshO>::DeleteVertex(m, m.vert[v]);
-    vcg::tri::Allocator<CMeshO>::CompactEveryVector(m);
-    for (size_t f = 0; f < fn; ++f) selected[f] ? m.face[f].SetS() : m.face[f].ClearS();
-    vcg::tri::UpdateBounding<CMeshO>::Box(m);
+    checkpoint.Restore();
     throw;
   }
   for (const HoleImage& hi : result.holes) {

@@ -22,28 +22,6 @@ double Since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-/// What FillHoles appends to the mesh, so a failure can take it back out exactly.
-class MeshCheckpoint {
-public:
-  explicit MeshCheckpoint(CMeshO& m) : m_(m), vn_(m.vert.size()), fn_(m.face.size()) {
-    for (const auto& f : m.face) selected_.push_back(f.IsS());
-  }
-  void Restore() {
-    for (size_t f = fn_; f < m_.face.size(); ++f)
-      if (!m_.face[f].IsD()) vcg::tri::Allocator<CMeshO>::DeleteFace(m_, m_.face[f]);
-    for (size_t v = vn_; v < m_.vert.size(); ++v)
-      if (!m_.vert[v].IsD()) vcg::tri::Allocator<CMeshO>::DeleteVertex(m_, m_.vert[v]);
-    vcg::tri::Allocator<CMeshO>::CompactEveryVector(m_);
-    for (size_t f = 0; f < fn_; ++f) selected_[f] ? m_.face[f].SetS() : m_.face[f].ClearS();
-    vcg::tri::UpdateBounding<CMeshO>::Box(m_);
-  }
-
-private:
-  CMeshO& m_;
-  size_t vn_, fn_;
-  std::vector<char> selected_;
-};
-
 /// The colour-map value of the variation at (u, v), bilinear between pixel centres.
 double SampleValue(const QImage& img, const Eigen::Vector2d& uv) {
   const double x = std::max(0.0, std::min(img.width() - 1.0, uv.x() * img.width() - 0.5));

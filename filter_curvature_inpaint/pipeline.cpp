@@ -15,6 +15,20 @@ vcg_ext::CoarseFillResult CoarseFill(CMeshO& m, const vcg_ext::CoarseFillParams&
   return result;
 }
 
+MeshCheckpoint::MeshCheckpoint(CMeshO& m) : m_(m), vn_(m.vert.size()), fn_(m.face.size()) {
+  for (const auto& f : m.face) selected_.push_back(f.IsS());
+}
+
+void MeshCheckpoint::Restore() {
+  for (size_t f = fn_; f < m_.face.size(); ++f)
+    if (!m_.face[f].IsD()) vcg::tri::Allocator<CMeshO>::DeleteFace(m_, m_.face[f]);
+  for (size_t v = vn_; v < m_.vert.size(); ++v)
+    if (!m_.vert[v].IsD()) vcg::tri::Allocator<CMeshO>::DeleteVertex(m_, m_.vert[v]);
+  vcg::tri::Allocator<CMeshO>::CompactEveryVector(m_);
+  for (size_t f = 0; f < fn_; ++f) selected_[f] ? m_.face[f].SetS() : m_.face[f].ClearS();
+  vcg::tri::UpdateBounding<CMeshO>::Box(m_);
+}
+
 std::vector<std::string> DescribeCoarseFill(const vcg_ext::CoarseFillResult& result) {
   std::vector<std::string> lines;
   char buf[512];

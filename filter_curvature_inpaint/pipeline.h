@@ -16,6 +16,19 @@ namespace curvature_inpaint {
 vcg_ext::CoarseFillResult CoarseFill(CMeshO& m, const vcg_ext::CoarseFillParams& params,
                                      vcg::CallBackPos* cb = nullptr);
 
+/// Remembers what the coarse fill is about to append (it only appends vertices and faces and
+/// replaces the face selection), so a later stage's failure can take it back out exactly.
+class MeshCheckpoint {
+public:
+  explicit MeshCheckpoint(CMeshO& m);
+  void Restore();
+
+private:
+  CMeshO& m_;
+  size_t vn_, fn_;
+  std::vector<char> selected_;
+};
+
 /// One line per hole, then a summary line.
 std::vector<std::string> DescribeCoarseFill(const vcg_ext::CoarseFillResult& result);
 

@@ -4,7 +4,7 @@ import json
 import os
 import unittest
 
-from support import (SCRIPTS, TOOL, TempDirTest, info, make_meshlab_prefix, png_size, run, sha256,
+from support import (SCRIPTS, TempDirTest, info, make_meshlab_prefix, png_size, run, sha256,
                      write_non_manifold_ply)
 
 
@@ -33,11 +33,7 @@ class MeshlabServer(TempDirTest):
                 self.assertEqual(after["non_manifold_edges"], 0)
 
     def test_curvature_images_script_writes_the_images_of_two_holes(self):
-        once = self.punched("nefertiti.ply", 33416, 0.03, "once.ply")
-        twice = self.path("twice.ply")
-        r = run([TOOL, "punch", once, twice, "--seed-vertex", "20000", "--radius-frac", "0.03"])
-        self.assertEqual(r.returncode, 0, r.stderr)
-        self.assertEqual(info(twice)["holes"], 2)
+        twice = self.punched_twice("nefertiti.ply", (33416, 0.03), (20000, 0.03))
         folder = self.path("images")
         with open(os.path.join(SCRIPTS, "curvature_inpaint_curvature_images.mlx")) as f:
             script = f.read()
@@ -60,11 +56,7 @@ class MeshlabServer(TempDirTest):
 
     def test_hole_fill_script_fills_two_holes_and_keeps_the_rest_bit_for_bit(self):
         from inpaint_test import read_binary_ply_xyz
-        once = self.punched("igea_190k.ply", 21537, 0.04, "once.ply")
-        twice = self.path("twice.ply")
-        r = run([TOOL, "punch", once, twice, "--seed-vertex", "60000", "--radius-frac", "0.03"])
-        self.assertEqual(r.returncode, 0, r.stderr)
-        self.assertEqual(info(twice)["holes"], 2)
+        twice = self.punched_twice("igea_190k.ply", (21537, 0.04), (60000, 0.03))
         out = self.path("filled.ply")
         r = self.meshlabserver(twice, out, os.path.join(SCRIPTS, "curvature_inpaint_hole_fill.mlx"))
         self.assertEqual(r.returncode, 0, r.stdout + r.stderr)

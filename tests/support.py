@@ -101,6 +101,16 @@ class TempDirTest(unittest.TestCase):
     def path(self, name):
         return os.path.join(self.tmp, name)
 
+    def punched_twice(self, mesh, first, second):
+        """`mesh` with two holes, each (seed vertex, radius fraction); the second seed indexes
+        the mesh after the first hole."""
+        once = self.punched(mesh, *first, "once.ply")
+        twice = self.path("twice.ply")
+        r = run([TOOL, "punch", once, twice, "--seed-vertex", str(second[0]), "--radius-frac", str(second[1])])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(info(twice)["holes"], 2)
+        return twice
+
     def punched(self, mesh, seed, radius_frac, name="punched.ply"):
         out = self.path(name)
         r = run([TOOL, "punch", os.path.join(SHARED_MESHES, mesh), out,
