@@ -8,7 +8,7 @@
 #include <QFileInfo>
 
 FilterCurvatureInpaintPlugin::FilterCurvatureInpaintPlugin() {
-  typeList << FP_COARSE_HOLE_FILL << FP_CURVATURE_IMAGES << FP_HOLE_FILL;
+  typeList << FP_COARSE_HOLE_FILL << FP_CURVATURE_IMAGES << FP_HOLE_FILL << FP_DEFORM_TO_IMAGE;
   for (FilterIDType t : types()) actionList << new QAction(filterName(t), this);
 }
 
@@ -24,6 +24,8 @@ QString FilterCurvatureInpaintPlugin::filterName(FilterIDType filter) const {
     return "Curvature Inpaint: Curvature Images";
   case FP_HOLE_FILL:
     return "Curvature Inpaint Hole Fill";
+  case FP_DEFORM_TO_IMAGE:
+    return "Curvature Inpaint: Deform to Curvature Image";
   }
   return {};
 }
@@ -54,12 +56,18 @@ QString FilterCurvatureInpaintPlugin::filterInfo(FilterIDType filter) const {
            "are options, their keys read from OPENAI_API_KEY, STABILITY_API_KEY, SD_WEBUI_AUTH), "
            "the best-scored of its variations chosen, and the patch deformed until its "
            "curvature matches. The mesh changes only when every stage succeeds.";
+  case FP_DEFORM_TO_IMAGE:
+    return "The last step of Curvature Inpaint Hole Fill with an image you inpainted yourself: run "
+           "Curvature Images with an output folder, complete hole_<k>_curvature.png in any "
+           "image editor and save it beside as hole_<k>_inpainted.png, then run this filter on "
+           "the same mesh with the same settings. Holes without such a file keep their coarse "
+           "fill.";
   }
   return {};
 }
 
 MeshFilterInterface::FilterClass FilterCurvatureInpaintPlugin::getClass(QAction* a) {
-  if (ID(a) == FP_HOLE_FILL)
+  if (ID(a) == FP_HOLE_FILL || ID(a) == FP_DEFORM_TO_IMAGE)
     return FilterClass(MeshFilterInterface::Remeshing + MeshFilterInterface::Cleaning);
   if (ID(a) == FP_CURVATURE_IMAGES)
     return FilterClass(MeshFilterInterface::Remeshing + MeshFilterInterface::VertexColoring);
@@ -176,6 +184,32 @@ void FilterCurvatureInpaintPlugin::initParameterSet(QAction* action, MeshModel&,
                             "and a montage; empty: nowhere."));
     break;
   }
+  case FP_DEFORM_TO_IMAGE: {
+    const curvature_inpaint::HoleFillParams d;
+    par.addParam(RichString("Folder", "", "Folder of the images",
+                            "The output folder of Curvature Images, holding hole_<k>.json and your "
+                            "hole_<k>_inpainted.png."));
+    par.addParam(RichEnum("Mode", 0,
+                          QStringList() << "direct"
+                                        << "paper",
+                          "Deformation",
+                          "direct: a few sparse solves. paper: the paper's small steps."));
+    par.addParam(
+        RichFloat("Similitude", float(d.paper.similitude), "Similitude (paper mode)",
+                  "Colour difference (0-255, any channel) above which a vertex is moved."));
+    par.addParam(RichFloat("TransformationConstant", float(d.paper.transformation_constant),
+                           "Transformation constant (paper mode)",
+                           "How far a differing vertex moves per step, in the unit box."));
+    par.addParam(
+        RichInt("MaxHoleSize", 0, "Max size to be closed", "As given to Curvature Images."));
+    par.addParam(RichFloat("Context", float(d.images.segmentation.context),
+                           "Context around each hole", "As given to Curvature Images."));
+    par.addParam(RichFloat("FilterScale", d.images.apss.filter_scale, "APSS filter scale",
+                           "As given to Curvature Images."));
+    par.addParam(RichInt("ImageSize", d.images.image_size, "Image size (pixels)",
+                         "As given to Curvature Images."));
+    break;
+  }
   }
 }
 
@@ -192,6 +226,23 @@ bool FilterCurvatureInpaintPlugin::applyFilter(QAction* action, MeshDocument& md
     return applyCurvatureImages(*md.mm(), par, cb);
   case FP_HOLE_FILL:
     return applyHoleFill(*md.mm(), par, cb);
+  case FP_DEFORM_TO_IMAGE: {
+    curvature_inpaint::HoleFillParams p;
+    p.inpainted_dir = par.getString("Folder").trimmed().toStdString();
+    if (p.inpainted_dir.empty()) {
+      errorMessage = "Deform to Curvature Image: choose the folder of the images.";
+      Log(GLLogStream::WARNING, errorMessage.toStdString());
+      return false;
+    }
+    p.mode = par.getEnum("Mode") == 1 ? "paper" : "direct";
+    p.paper.similitude = std::max(0.0f, par.getFloat("Similitude"));
+    p.paper.transformation_constant = std::max(0.0f, par.getFloat("TransformationConstant"));
+    p.images.coarse.max_hole_edges = std::max(0, par.getInt("MaxHoleSize"));
+    p.images.segmentation.context = std::max(0.05f, par.getFloat("Context"));
+    p.images.apss.filter_scale = std::max(1.0f, par.getFloat("FilterScale"));
+    p.images.image_size = std::max(16, std::min(8192, par.getInt("ImageSize")));
+    return runHoleFill(*md.mm(), p, cb);
+  }
   }
   return false;
 }
@@ -266,6 +317,12 @@ bool FilterCurvatureInpaintPlugin::applyHoleFill(MeshModel& mm, const RichParame
   p.images.coarse.max_hole_edges = std::max(0, par.getInt("MaxHoleSize"));
   p.images.image_size = std::max(16, std::min(4096, par.getInt("ImageSize")));
   p.images_dir = par.getString("OutputFolder").trimmed().toStdString();
+  return runHoleFill(mm, p, cb);
+}
+
+bool FilterCurvatureInpaintPlugin::runHoleFill(MeshModel& mm,
+                                               const curvature_inpaint::HoleFillParams& p,
+                                               vcg::CallBackPos* cb) {
   try {
     const auto result = curvature_inpaint::FillHoles(mm.cm, p, cb);
     for (const std::string& line : curvature_inpaint::DescribeHoleFill(result)) Log(line);

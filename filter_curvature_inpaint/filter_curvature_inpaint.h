@@ -4,13 +4,15 @@
 
 #include <common/interfaces.h>
 
+#include "hole_fill.h"
+
 class FilterCurvatureInpaintPlugin : public QObject, public MeshFilterInterface {
   Q_OBJECT
   MESHLAB_PLUGIN_IID_EXPORTER(MESH_FILTER_INTERFACE_IID)
   Q_INTERFACES(MeshFilterInterface)
 
 public:
-  enum { FP_COARSE_HOLE_FILL, FP_CURVATURE_IMAGES, FP_HOLE_FILL };
+  enum { FP_COARSE_HOLE_FILL, FP_CURVATURE_IMAGES, FP_HOLE_FILL, FP_DEFORM_TO_IMAGE };
 
   FilterCurvatureInpaintPlugin();
 
@@ -30,4 +32,5 @@ private:
   bool applyCoarseHoleFill(MeshModel& mm, const RichParameterList& par, vcg::CallBackPos* cb);
   bool applyCurvatureImages(MeshModel& mm, const RichParameterList& par, vcg::CallBackPos* cb);
   bool applyHoleFill(MeshModel& mm, const RichParameterList& par, vcg::CallBackPos* cb);
+  bool runHoleFill(MeshModel& mm, const curvature_inpaint::HoleFillParams& p, vcg::CallBackPos* cb);
 };

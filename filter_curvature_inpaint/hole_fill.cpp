@@ -6,6 +6,10 @@
 
 #include <QColor>
 #include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QPainter>
 
 #include <algorithm>
@@ -49,6 +53,33 @@ int Folded(const std::vector<Eigen::Vector3d>& before, const std::vector<Eigen::
     folded += a.dot(b) <= 0;
   }
   return folded;
+}
+
+/// The hole's JSON from the Curvature Images stage must describe the patch rebuilt now (same
+/// vertices): otherwise the hand-inpainted image belongs to another mesh or other settings.
+void CheckMatchesFolder(const std::string& json_path, const HoleImage& hi) {
+  QFile f(QString::fromStdString(json_path));
+  if (!f.open(QIODevice::ReadOnly)) throw std::runtime_error("cannot read " + json_path);
+  const QJsonObject o = QJsonDocument::fromJson(f.readAll()).object();
+  const QJsonArray vertices = o.value("vertices").toArray();
+  bool same = o.value("image_size").toInt() == hi.image.size &&
+              vertices.size() == int(hi.patch.vertices.size());
+  for (int i = 0; same && i < vertices.size(); ++i)
+    same = vertices[i].toObject().value("index").toInt() == hi.patch.vertices[i];
+  if (!same)
+    throw std::runtime_error(json_path + " describes another patch: make the images again from "
+                                         "this mesh with the same maximum hole size, context, "
+                                         "filter scale and image size");
+}
+
+/// An image edited by hand, at the patch image's size, with the known pixels as they were.
+QImage KnownPixelsKept(const QImage& edited, const QImage& image, const QImage& mask) {
+  QImage v = edited.convertToFormat(QImage::Format_RGB32)
+                 .scaled(image.size(), Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
+  for (int y = 0; y < v.height(); ++y)
+    for (int x = 0; x < v.width(); ++x)
+      if (qGray(mask.pixel(x, y)) <= 127) v.setPixel(x, y, image.pixel(x, y));
+  return v;
 }
 
 void SavePng(const QImage& image, const std::string& path) {
@@ -136,7 +167,20 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
         throw vcg_ext::CancelledError();
       auto t = Clock::now();
       const QImage image = ToQImage(hi.image, false), mask = MaskImage(hi.image);
-      const std::vector<QImage> variations = Inpaint(image, mask, inpaint);
+      std::vector<QImage> variations;
+      if (params.inpainted_dir.empty()) {
+        variations = Inpaint(image, mask, inpaint);
+      } else {
+        const std::string base = params.inpainted_dir + "/hole_" + std::to_string(k + 1);
+        CheckMatchesFolder(base + ".json", hi);
+        QImage done(QString::fromStdString(base + "_inpainted.png"));
+        if (done.isNull()) {
+          report.problem = "no " + base + "_inpainted.png; it keeps its coarse fill";
+          result.holes.push_back(report);
+          continue;
+        }
+        variations = {KnownPixelsKept(done, image, mask)};
+      }
       report.inpaint_s = Since(t);
       for (const QImage& v : variations) report.scores.push_back(ScoreVariation(v, hi.image));
       report.pick = params.pick > 0

@@ -21,6 +21,10 @@ struct HoleFillParams {
   vcg_ext::DirectDeformationParams direct;
   vcg_ext::PaperDeformationParams paper;
   std::string images_dir; ///< where to write every hole's images; empty: nowhere
+  /// Instead of a backend: the folder where the Curvature Images stage wrote hole_<k>.json and
+  /// a person (in any image editor) left hole_<k>_inpainted.png. The patches are rebuilt with
+  /// the same parameters and must match the JSON files.
+  std::string inpainted_dir;
 };
 
 struct HoleFillReport {

@@ -4,7 +4,7 @@ import json
 import os
 import unittest
 
-from support import (SCRIPTS, TempDirTest, info, make_meshlab_prefix, png_size, run, sha256,
+from support import (SCRIPTS, TOOL, TempDirTest, info, make_meshlab_prefix, png_size, run, sha256,
                      write_non_manifold_ply)
 
 
@@ -23,6 +23,8 @@ class MeshlabServer(TempDirTest):
         src = self.punched("nefertiti.ply", 33416, 0.03)
         self.assertEqual(info(src)["holes"], 1)
         for script in scripts:
+            if script.endswith("deform_to_curvature_image.mlx"):
+                continue  # needs a folder of images: its own test below
             with self.subTest(script=os.path.basename(script)):
                 out = self.path(os.path.basename(script) + ".ply")
                 r = self.meshlabserver(src, out, script)
@@ -65,6 +67,44 @@ class MeshlabServer(TempDirTest):
         self.assertEqual(info(out)["non_manifold_edges"], 0)
         before, after = read_binary_ply_xyz(twice), read_binary_ply_xyz(out)
         self.assertEqual(after[:len(before)], before)
+
+    def edited_script(self, name, value_of):
+        with open(os.path.join(SCRIPTS, name)) as f:
+            script = f.read()
+        for param, value in value_of.items():
+            before = f'name="{param}" value=""'
+            self.assertIn(before, script)
+            script = script.replace(before, f'name="{param}" value="{value}"')
+        path = self.path(name)
+        with open(path, "w") as f:
+            f.write(script)
+        return path
+
+    def test_deform_to_an_image_inpainted_by_hand(self):
+        src = self.punched("nefertiti.ply", 33416, 0.03)
+        folder = self.path("images")
+        r = self.meshlabserver(src, self.path("coloured.ply"),
+                               self.edited_script("curvature_inpaint_curvature_images.mlx", {"OutputFolder": folder}))
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        # "Inpaint by hand": the embedded backend stands in for a person with an image editor.
+        r = run([TOOL, "inpaint", os.path.join(folder, "hole_1_curvature.png"),
+                 os.path.join(folder, "hole_1_mask.png"), self.path("hand"), "-n", "1"])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        os.rename(self.path("hand/variation_1.png"), os.path.join(folder, "hole_1_inpainted.png"))
+        out = self.path("deformed.ply")
+        r = self.meshlabserver(src, out, self.edited_script("curvature_inpaint_deform_to_curvature_image.mlx",
+                                                            {"Folder": folder}))
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertIn("detail 1: 43 edges, variation 1 of 1", r.stdout + r.stderr)
+        self.assertEqual(info(out)["holes"], 0)
+
+    def test_deform_without_a_folder_is_refused(self):
+        src = self.punched("nefertiti.ply", 33416, 0.03)
+        out = self.path("out.ply")
+        r = self.meshlabserver(src, out, os.path.join(SCRIPTS, "curvature_inpaint_deform_to_curvature_image.mlx"))
+        self.assertNotEqual(r.returncode, 0)
+        self.assertIn("choose the folder of the images", r.stdout + r.stderr)
+        self.assertFalse(os.path.exists(out))
 
     def test_unwritable_output_folder_changes_nothing(self):
         src = self.punched("nefertiti.ply", 33416, 0.03)

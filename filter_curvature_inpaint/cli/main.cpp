@@ -24,10 +24,12 @@ const char* const kUsage =
     "  curvature-inpaint fill IN OUT [--backend NAME] [--url URL] [--model M] [--prompt TEXT]\n"
     "                   [--variations N] [--pick auto|K] [--mode direct|paper] [--similitude S]\n"
     "                   [--transformation-constant T] [--max-hole-edges N] [--size PX]\n"
-    "                   [--images DIR] [--report FILE.json]\n"
+    "                   [--images DIR] [--report FILE.json] [--from-images DIR] [--context C]\n"
     "      The main job: fill every hole of IN with detail (coarse fill, curvature images,\n"
     "      inpainting, deformation to the chosen variation) and write OUT. --pick auto (default)\n"
     "      takes the best-scored variation. Backends and their options as for inpaint.\n"
+    "      --from-images DIR deforms to hole_<k>_inpainted.png, inpainted by hand in DIR\n"
+    "      after `images IN DIR --size PX` (same --max-hole-edges, --context, --size).\n"
     "  curvature-inpaint coarse IN OUT [--max-hole-edges N] [--selected-only]\n"
     "                                 [--liepa-max-edges M] [--no-refine] [--no-fair]\n"
     "      Fill every hole of IN (stages 0-2: Liepa triangulation, refinement, fairing) and\n"
@@ -227,6 +229,9 @@ int Fill(Args& args) {
   p.images.coarse.max_hole_edges = int(args.Integer("--max-hole-edges", 0, 0));
   p.images.image_size = int(args.Integer("--size", 512, 16));
   p.images_dir = args.Option("--images", "");
+  p.inpainted_dir = args.Option("--from-images", "");
+  const std::string context = args.Option("--context", "");
+  if (!context.empty()) p.images.segmentation.context = ParsePositive("--context", context);
   const std::string report = args.Option("--report", "");
   const auto files = args.Positional(2);
   CMeshO m;
