@@ -78,6 +78,37 @@ Samples SampleRegion(CMeshO& from, Surface& reference, double tol, int count) {
   return s;
 }
 
+// The spread (standard deviation) of the APSS mean curvature over the vertices of the faces
+// of `from` that lie off `reference`: how much detail a region has.
+double CurvatureSpread(CMeshO& from, Surface& reference, double tol) {
+  std::vector<char> in_region(from.vert.size(), 0);
+  Box3m box;
+  for (auto& f : from.face) {
+    const Point3m c = (f.cP(0) + f.cP(1) + f.cP(2)) / 3;
+    if (reference.Distance(c) <= tol) continue;
+    for (int k = 0; k < 3; ++k) in_region[vcg::tri::Index(from, f.V(k))] = 1, box.Add(f.cP(k));
+  }
+  if (box.IsNull()) return 0;
+  box.Offset(box.Diag() * 0.2f);
+  std::vector<Eigen::Vector3d> points, normals;
+  std::vector<int> query;
+  for (size_t i = 0; i < from.vert.size(); ++i) {
+    const auto& v = from.vert[i];
+    if (!box.IsIn(v.cP())) continue;
+    if (in_region[i]) query.push_back(int(points.size()));
+    points.emplace_back(v.cP()[0], v.cP()[1], v.cP()[2]);
+    normals.emplace_back(v.cN()[0], v.cN()[1], v.cN()[2]);
+  }
+  const std::vector<double> h = vcg_ext::ApssMeanCurvature(points, normals, query);
+  double sum = 0, sq = 0;
+  int n = 0;
+  for (double x : h)
+    if (std::isfinite(x)) sum += x, sq += x * x, ++n;
+  if (n < 2) return 0;
+  const double mean = sum / n;
+  return std::sqrt(std::max(0.0, sq / n - mean * mean));
+}
+
 void PrintStats(const char* name, const std::vector<double>& d, double diag) {
   double mx = 0, sum = 0, sq = 0;
   for (double x : d) mx = std::max(mx, x), sum += x, sq += x * x;
@@ -103,15 +134,18 @@ int Metrics(const std::string& gt_path, const std::string& input_path,
     const double c = std::max(-1.0, std::min(1.0, double(n * fill_region.normals[i])));
     normal_dev += std::acos(c) * 180 / M_PI;
   }
+  const double spread_fill = CurvatureSpread(result.m, input, tol);
+  const double spread_gt = CurvatureSpread(gt.m, input, tol);
   const auto census = curvature_inpaint::CountHoles(result.m);
   std::printf("{");
   PrintStats("gt_to_result", gt_to_result, diag);
   std::printf(", ");
   PrintStats("result_to_gt", result_to_gt, diag);
   std::printf(", \"normal_deviation_deg\": %.3f, \"holes_left\": %zu, \"non_manifold_edges\": %zu, "
-              "\"filled_samples\": %zu}\n",
+              "\"filled_samples\": %zu, \"detail_ratio\": %.3f}\n",
               normal_dev / std::max<size_t>(fill_region.points.size(), 1), census.loop_edges.size(),
-              census.non_manifold_edges, fill_region.points.size());
+              census.non_manifold_edges, fill_region.points.size(),
+              spread_gt > 0 ? spread_fill / spread_gt : 0.0);
   return 0;
 }
 

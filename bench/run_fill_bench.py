@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 """The whole method against its own coarse fill on the public cases (embedded backend, both
-deformation modes). Distances as in run_coarse_bench.py.
+deformation modes). Distances as in run_coarse_bench.py; detail ratio: the spread (standard
+deviation) of the APSS mean curvature over the fill's vertices divided by the ground truth's
+over the same region (1: as much detail as the truth; smooth fills sit below).
 
     python3 bench/run_fill_bench.py
 """
@@ -29,10 +31,11 @@ def main():
                 seconds = time.perf_counter() - start
                 steps = re.findall(r"(\d+) deformation steps", r.stderr)
                 m = metrics(gt, inp, out)
-                rows.append(f"| {name} | {label} | {dist(m)} | {m['normal_deviation_deg']:.1f} | {m['holes_left']} | "
+                rows.append(f"| {name} | {label} | {dist(m)} | {m['detail_ratio']:.2f} | "
+                            f"{m['normal_deviation_deg']:.1f} | {m['holes_left']} | "
                             f"{seconds:.2f} | {'+'.join(steps) or '-'} |")
         table("The whole method (embedded backend) against its coarse fill",
-              ["case", "method", "ground truth → fill", "fill → ground truth", "normal deviation (°)",
+              ["case", "method", "ground truth → fill", "fill → ground truth", "detail ratio", "normal deviation (°)",
                "holes left", "process s", "deformation steps"], rows)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
