@@ -7,6 +7,26 @@
 #include <QDir>
 #include <QFileInfo>
 
+namespace {
+
+// The paper's two constants, shared by Curvature Inpaint Hole Fill and Deform to Curvature Image.
+void AddPaperModeParams(RichParameterList& par) {
+  const curvature_inpaint::HoleFillParams d;
+  par.addParam(RichFloat("Similitude", float(d.paper.similitude), "Similitude (paper mode)",
+                         "Colour difference (0-255, any channel) above which a vertex is moved."));
+  par.addParam(RichFloat("TransformationConstant", float(d.paper.transformation_constant),
+                         "Transformation constant (paper mode)",
+                         "How far a differing vertex moves per step, in the unit box."));
+}
+
+void ReadDeformationParams(const RichParameterList& par, curvature_inpaint::HoleFillParams& p) {
+  p.mode = par.getEnum("Mode") == 1 ? "paper" : "direct";
+  p.paper.similitude = std::max(0.0f, par.getFloat("Similitude"));
+  p.paper.transformation_constant = std::max(0.0f, par.getFloat("TransformationConstant"));
+}
+
+} // namespace
+
 FilterCurvatureInpaintPlugin::FilterCurvatureInpaintPlugin() {
   typeList << FP_COARSE_HOLE_FILL << FP_CURVATURE_IMAGES << FP_HOLE_FILL << FP_DEFORM_TO_IMAGE;
   for (FilterIDType t : types()) actionList << new QAction(filterName(t), this);
@@ -162,12 +182,7 @@ void FilterCurvatureInpaintPlugin::initParameterSet(QAction* action, MeshModel&,
         RichInt("Variation", 0, "Variation to use",
                 "0: the one with the best score (continuity across the hole's border, "
                 "colours on the palette, values in the surroundings' range); k: the k-th."));
-    par.addParam(
-        RichFloat("Similitude", float(d.paper.similitude), "Similitude (paper mode)",
-                  "Colour difference (0-255, any channel) above which a vertex is moved."));
-    par.addParam(RichFloat("TransformationConstant", float(d.paper.transformation_constant),
-                           "Transformation constant (paper mode)",
-                           "How far a differing vertex moves per step, in the unit box."));
+    AddPaperModeParams(par);
     par.addParam(
         RichEnum("Mode", 0,
                  QStringList() << "direct"
@@ -194,12 +209,7 @@ void FilterCurvatureInpaintPlugin::initParameterSet(QAction* action, MeshModel&,
                                         << "paper",
                           "Deformation",
                           "direct: a few sparse solves. paper: the paper's small steps."));
-    par.addParam(
-        RichFloat("Similitude", float(d.paper.similitude), "Similitude (paper mode)",
-                  "Colour difference (0-255, any channel) above which a vertex is moved."));
-    par.addParam(RichFloat("TransformationConstant", float(d.paper.transformation_constant),
-                           "Transformation constant (paper mode)",
-                           "How far a differing vertex moves per step, in the unit box."));
+    AddPaperModeParams(par);
     par.addParam(
         RichInt("MaxHoleSize", 0, "Max size to be closed", "As given to Curvature Images."));
     par.addParam(RichFloat("Context", float(d.images.segmentation.context),
@@ -234,9 +244,7 @@ bool FilterCurvatureInpaintPlugin::applyFilter(QAction* action, MeshDocument& md
       Log(GLLogStream::WARNING, errorMessage.toStdString());
       return false;
     }
-    p.mode = par.getEnum("Mode") == 1 ? "paper" : "direct";
-    p.paper.similitude = std::max(0.0f, par.getFloat("Similitude"));
-    p.paper.transformation_constant = std::max(0.0f, par.getFloat("TransformationConstant"));
+    ReadDeformationParams(par, p);
     p.images.coarse.max_hole_edges = std::max(0, par.getInt("MaxHoleSize"));
     p.images.segmentation.context = std::max(0.05f, par.getFloat("Context"));
     p.images.apss.filter_scale = std::max(1.0f, par.getFloat("FilterScale"));
@@ -311,9 +319,7 @@ bool FilterCurvatureInpaintPlugin::applyHoleFill(MeshModel& mm, const RichParame
   p.inpaint.prompt = par.getString("Prompt").toStdString();
   p.inpaint.variations = std::max(1, std::min(10, par.getInt("Variations")));
   p.pick = std::max(0, par.getInt("Variation"));
-  p.paper.similitude = std::max(0.0f, par.getFloat("Similitude"));
-  p.paper.transformation_constant = std::max(0.0f, par.getFloat("TransformationConstant"));
-  p.mode = par.getEnum("Mode") == 1 ? "paper" : "direct";
+  ReadDeformationParams(par, p);
   p.images.coarse.max_hole_edges = std::max(0, par.getInt("MaxHoleSize"));
   p.images.image_size = std::max(16, std::min(4096, par.getInt("ImageSize")));
   p.images_dir = par.getString("OutputFolder").trimmed().toStdString();
