@@ -111,20 +111,21 @@ private:
   std::vector<std::string> args_;
 };
 
-double ParsePositive(const std::string& name, const std::string& v) {
+/// A finite number above zero, or from zero on when `zero_allowed`.
+double ParseNumber(const std::string& name, const std::string& v, bool zero_allowed) {
   char* end = nullptr;
   const double x = std::strtod(v.c_str(), &end);
-  if (v.empty() || *end != '\0' || !(x > 0) || !std::isfinite(x))
-    throw UsageError(name + " needs a positive number");
+  if (v.empty() || *end != '\0' || !std::isfinite(x) || x < 0 || (x == 0 && !zero_allowed))
+    throw UsageError(name + (zero_allowed ? " needs a number >= 0" : " needs a positive number"));
   return x;
 }
 
+double ParsePositive(const std::string& name, const std::string& v) {
+  return ParseNumber(name, v, false);
+}
+
 double ParseNonNegative(const std::string& name, const std::string& v) {
-  char* end = nullptr;
-  const double x = std::strtod(v.c_str(), &end);
-  if (v.empty() || *end != '\0' || !(x >= 0) || !std::isfinite(x))
-    throw UsageError(name + " needs a number >= 0");
-  return x;
+  return ParseNumber(name, v, true);
 }
 
 bool ProgressToStderr(const int, const char* message) {
