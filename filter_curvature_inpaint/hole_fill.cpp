@@ -136,9 +136,7 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
   HoleFillResult result;
   CurvatureImagesParams ip = params.images;
   ip.color_vertices = false;
-  const auto t0 = Clock::now();
   CurvatureImagesResult images = ComputeCurvatureImages(m, ip, cb);
-  const double images_s = Since(t0);
   result.coarse = images.coarse;
   try {
     InpaintParams inpaint = params.inpaint;
@@ -289,7 +287,6 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
     checkpoint.Restore();
     throw;
   }
-  (void)images_s;
   // Normals of the moved fill.
   for (const auto& h : result.coarse.holes)
     for (int f : h.new_faces) m.face[f].N() = vcg::TriangleNormal(m.face[f]).Normalize();
