@@ -89,8 +89,6 @@ class Backends(TempDirTest):
                         for x in range(w):
                             if mask[y][x] == 0:
                                 self.assertEqual(rows[y][x * ch:x * ch + 3], src[y][x * 3:x * 3 + 3])
-                            elif backend != "embedded":
-                                pass  # the stand-ins answer flat green in the hole
 
     def test_gpt_image_1(self):
         # The stand-in decodes the 1024 x 1024 PNG in pure Python: give it time.
@@ -184,7 +182,7 @@ class Embedded(TempDirTest):
         f = lambda x, y: 0.5 + 0.4 * ((x - 48) ** 2 - (y - 48) ** 2) / 48 ** 2 + 0.1 * (x - y) / 96  # noqa: E731
         hole = lambda x, y: (x - 50) ** 2 + (y - 44) ** 2 < 22 ** 2  # noqa: E731
         errors = self.inpainted_errors(f, size, hole, "--detail", "0")
-        self.assertLess(max(abs(e) for e in errors), 2.5 / 255 * 1.0 + 1.0 / 255)  # 8-bit colours
+        self.assertLess(max(abs(e) for e in errors), 3.5 / 255)  # 8-bit colours, both ways
 
     def test_smooth_field_rms_below_telea_and_navier_stokes(self):
         # The design notes' case: a 256-pixel rainbow field with a radius-40 hole, where OpenCV's
