@@ -32,7 +32,12 @@ struct Surface {
     curvature_inpaint::LoadMesh(path, m);
     m.face.EnableMark();
     vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
-    grid.Set(m.face.begin(), m.face.end());
+    // A generous margin: with vcglib's own (diagonal / faces) a query point a rounding error
+    // inside the box's border maps to a cell past the grid's end.
+    vcg::tri::UpdateBounding<CMeshO>::Box(m);
+    Box3m box = m.bbox;
+    box.Offset(0.01f * box.Diag());
+    grid.Set(m.face.begin(), m.face.end(), box);
   }
   // Distance from p to the surface; the closest face's normal in `normal`.
   double Distance(const Point3m& p, Point3m* normal = nullptr) {
@@ -186,7 +191,8 @@ int Subdivide(const std::string& in, const std::string& out) {
 // `curvature-inpaint images` makes them) and, beside each, the ideal image: the ground truth's
 // own APSS curvature carried to every coarse-patch vertex from the nearest ground-truth
 // vertex, normalized and rasterized exactly like the hole's image.
-int Ideal(const std::string& gt_path, const std::string& input_path, const std::string& dir, int size) {
+int Ideal(const std::string& gt_path, const std::string& input_path, const std::string& dir,
+          int size) {
   CMeshO gt, in;
   curvature_inpaint::LoadMesh(gt_path, gt);
   curvature_inpaint::LoadMesh(input_path, in);
@@ -200,7 +206,8 @@ int Ideal(const std::string& gt_path, const std::string& input_path, const std::
     if (!hi.problem.empty()) continue;
     Eigen::AlignedBox3d region;
     for (const auto& p : hi.patch.points) region.extend(p);
-    const Eigen::Vector3d margin = 0.15 * (region.max() - region.min()) + Eigen::Vector3d::Constant(1e-3);
+    const Eigen::Vector3d margin =
+        0.15 * (region.max() - region.min()) + Eigen::Vector3d::Constant(1e-3);
     region.extend(region.min() - margin);
     region.extend(region.max() + margin);
     std::vector<Eigen::Vector3d> points, normals;
@@ -221,8 +228,10 @@ int Ideal(const std::string& gt_path, const std::string& input_path, const std::
     const std::vector<double> h = vcg_ext::ApssMeanCurvature(points, normals, nearest);
     std::vector<double> value(h.size());
     for (size_t i = 0; i < h.size(); ++i)
-      value[i] = std::isfinite(h[i]) ? std::max(0.0, std::min(1.0, 0.5 + 0.5 * h[i] / hi.scale)) : 0.5;
-    const auto ideal = vcg_ext::RasterizeCurvature(hi.uv.uv, value, hi.patch.triangles, hi.patch.is_fill, size);
+      value[i] =
+          std::isfinite(h[i]) ? std::max(0.0, std::min(1.0, 0.5 + 0.5 * h[i] / hi.scale)) : 0.5;
+    const auto ideal =
+        vcg_ext::RasterizeCurvature(hi.uv.uv, value, hi.patch.triangles, hi.patch.is_fill, size);
     QImage q(size, size, QImage::Format_RGB32);
     for (int y = 0; y < size; ++y)
       for (int x = 0; x < size; ++x) {
@@ -321,7 +330,8 @@ int main(int argc, char** argv) {
           argc == 11 ? Point3m(std::stof(argv[8]), std::stof(argv[9]), std::stof(argv[10]))
                      : Point3m(0, 0, 0));
     std::fprintf(stderr, "usage: bench_tools metrics GT INPUT RESULT | subdivide IN OUT | "
-                         "append A B OUT | ideal GT INPUT DIR SIZE | render MESH OUT.png CX CY CZ RADIUS [VX VY VZ]\n");
+                         "append A B OUT | ideal GT INPUT DIR SIZE | render MESH OUT.png CX CY CZ "
+                         "RADIUS [VX VY VZ]\n");
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_tools: %s\n", e.what());

@@ -157,9 +157,15 @@ class Backends(TempDirTest):
 
 
 class Embedded(TempDirTest):
-    def field_image(self, f, size, hole):
-        """A curvature image of the field f(x, y) and a mask of the pixels `hole` selects."""
-        rows = [bytes(c for x in range(size) for c in colour(f(x, y))) for y in range(size)]
+    def field_image(self, f, size, hole, prior=None):
+        """A curvature image of the field f(x, y) and a mask of the pixels `hole` selects. The
+        hole's pixels are black (off the colour map: nothing known there) or, given `prior`,
+        painted with prior(x, y), as a coarse fill's curvature would be."""
+        def pixel(x, y):
+            if not hole(x, y):
+                return colour(f(x, y))
+            return colour(prior(x, y)) if prior else (0, 0, 0)
+        rows = [bytes(c for x in range(size) for c in pixel(x, y)) for y in range(size)]
         img, mask = self.path("field.png"), self.path("mask.png")
         with open(img, "wb") as out:
             out.write(pngs.encode(size, size, rows=rows))
@@ -168,8 +174,8 @@ class Embedded(TempDirTest):
             out.write(pngs.encode(size, size, rows=mrows))
         return img, mask
 
-    def inpainted_errors(self, f, size, hole, *extra):
-        img, mask = self.field_image(f, size, hole)
+    def inpainted_errors(self, f, size, hole, *extra, prior=None):
+        img, mask = self.field_image(f, size, hole, prior)
         out = self.path("out")
         r = run([TOOL, "inpaint", img, mask, out, "-n", "1", *extra])
         self.assertEqual(r.returncode, 0, r.stderr)
@@ -193,6 +199,18 @@ class Embedded(TempDirTest):
         errors = self.inpainted_errors(f, size, hole)
         rms = math.sqrt(sum(e * e for e in errors) / len(errors))
         self.assertLess(rms, 0.091)
+
+    def test_follows_the_coarse_curvature_the_hole_still_shows(self):
+        # A bump inside the hole that no continuation from the border can guess: painted in the
+        # hole (as the coarse fill's curvature is), it comes back; left black, it does not.
+        size = 128
+        bump = lambda x, y: 0.5 + 0.3 * math.exp(-((x - 64) ** 2 + (y - 64) ** 2) / 12 ** 2)  # noqa: E731
+        hole = lambda x, y: (x - 64) ** 2 + (y - 64) ** 2 < 36 ** 2  # noqa: E731
+        rms = lambda e: math.sqrt(sum(x * x for x in e) / len(e))  # noqa: E731
+        with_prior = rms(self.inpainted_errors(bump, size, hole, "--detail", "0", prior=bump))
+        without = rms(self.inpainted_errors(bump, size, hole, "--detail", "0"))
+        self.assertLess(with_prior, 0.02)
+        self.assertGreater(without, 0.05)
 
     def test_variations_differ_by_seed_and_repeat_for_the_same_seed(self):
         size = 64

@@ -169,16 +169,15 @@ int Images(Args& args) {
   return 0;
 }
 
-int InpaintCommand(Args& args) {
-  curvature_inpaint::InpaintParams p;
+/// The backend's options, shared by `inpaint` and `fill` (which differ only in how they name
+/// the number of variations).
+void ReadBackendOptions(Args& args, curvature_inpaint::InpaintParams& p) {
   p.backend = args.Option("--backend", p.backend);
   p.url = args.Option("--url", "");
   p.model = args.Option("--model", "");
   p.prompt = args.Option("--prompt", "");
   p.negative_prompt = args.Option("--negative-prompt", "");
-  p.variations = int(args.Integer("-n", p.variations, 1));
   p.seed = uint32_t(args.Integer("--seed", p.seed, 0));
-  p.size = int(args.Integer("--size", 0, 0));
   p.workflow_file = args.Option("--workflow", "");
   const std::string timeout = args.Option("--timeout", "");
   if (!timeout.empty()) p.http.total_timeout_s = ParsePositive("--timeout", timeout);
@@ -186,6 +185,13 @@ int InpaintCommand(Args& args) {
   p.http.max_retries = int(args.Integer("--retries", p.http.max_retries, 0));
   const std::string detail = args.Option("--detail", "");
   if (!detail.empty()) p.detail = ParseNonNegative("--detail", detail);
+}
+
+int InpaintCommand(Args& args) {
+  curvature_inpaint::InpaintParams p;
+  ReadBackendOptions(args, p);
+  p.variations = int(args.Integer("-n", p.variations, 1));
+  p.size = int(args.Integer("--size", 0, 0));
   const auto files = args.Positional(3);
   QImage image(QString::fromStdString(files[0])), mask(QString::fromStdString(files[1]));
   if (image.isNull()) throw std::runtime_error(files[0] + ": not a readable image");
@@ -205,15 +211,8 @@ int InpaintCommand(Args& args) {
 
 int Fill(Args& args) {
   curvature_inpaint::HoleFillParams p;
-  p.inpaint.backend = args.Option("--backend", p.inpaint.backend);
-  p.inpaint.url = args.Option("--url", "");
-  p.inpaint.model = args.Option("--model", "");
-  p.inpaint.prompt = args.Option("--prompt", "");
+  ReadBackendOptions(args, p.inpaint);
   p.inpaint.variations = int(args.Integer("--variations", p.inpaint.variations, 1));
-  p.inpaint.seed = uint32_t(args.Integer("--seed", p.inpaint.seed, 0));
-  const std::string timeout = args.Option("--timeout", "");
-  if (!timeout.empty()) p.inpaint.http.total_timeout_s = ParsePositive("--timeout", timeout);
-  p.inpaint.http.max_retries = int(args.Integer("--retries", p.inpaint.http.max_retries, 0));
   const std::string pick = args.Option("--pick", "auto");
   if (pick != "auto") {
     char* end = nullptr;

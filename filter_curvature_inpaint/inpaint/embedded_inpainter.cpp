@@ -5,7 +5,8 @@
 //    side and upsampled: the curvature field is smooth at that scale, and a biharmonic
 //    continuation keeps its level and its slope across the hole's border (on a synthetic
 //    field the design notes measured RMS 0.018 against 0.10 for OpenCV's Telea). On real
-//    curvature a membrane term and a weak pull towards flat keep it from overshooting.
+//    curvature a membrane term and a weak pull towards flat keep it from overshooting, and
+//    where the hole still shows the coarse fill's curvature, a pull towards that.
 // 3. Add fine detail: the known region's high-pass residual, copied into the hole in
 //    feathered blocks from places chosen by the seed, so each seed gives another variation
 //    with the amplitude of detail the surroundings show.
@@ -24,10 +25,27 @@ namespace curvature_inpaint {
 
 namespace {
 
+// The energy of the continuation, on the <= 256-pixel grid: thin plate (squared Laplacian),
+// plus a membrane term (squared gradient) that keeps a steep border from overshooting, plus a
+// weak pull towards flat (value 0.5), the safest guess far from any border. The two weights
+// were chosen on the public cases of the inpainting benchmark (bench/run_inpaint_bench.py);
+// there the pure thin plate overshoots on the Igea nose and the falcon's base.
+constexpr double kMembrane = 0.3;
+constexpr double kScreening = 1e-4;
+// Where the hole's pixels carry the coarse fill's curvature, a pull towards it. On the same
+// benchmark that curvature is closer to the truth than any continuation from the border
+// (bench/run_inpaint_bench.py, last column), so the continuation only bends it near the
+// border; the weight was chosen with bench/run_fill_bench.py (0.01-0.1 all beat CGAL there).
+constexpr double kCoarsePrior = 0.03;
+// Colour distance (0-441) under which a pixel counts as painted with the colour map.
+constexpr double kOnColormap = 24;
+
 struct Field {
   int w = 0, h = 0;
   std::vector<double> v;
   std::vector<char> known;
+  std::vector<double> prior;        ///< hole pixels: the value they carry (the coarse fill's)
+  std::vector<double> prior_weight; ///< its weight: 0 where the pixel is off the colour map
   double& at(int x, int y) { return v[size_t(y) * w + x]; }
   double at(int x, int y) const { return v[size_t(y) * w + x]; }
   bool is_known(int x, int y) const { return known[size_t(y) * w + x]; }
@@ -39,24 +57,24 @@ Field ReadField(const QImage& image, const QImage& mask) {
   f.h = image.height();
   f.v.assign(size_t(f.w) * f.h, 0.5);
   f.known.assign(size_t(f.w) * f.h, 0);
+  f.prior.assign(size_t(f.w) * f.h, 0.5);
+  f.prior_weight.assign(size_t(f.w) * f.h, 0.0);
   for (int y = 0; y < f.h; ++y)
     for (int x = 0; x < f.w; ++x) {
-      if (qGray(mask.pixel(x, y)) > 127) continue;
       const QRgb c = image.pixel(x, y);
-      f.at(x, y) =
-          vcg_ext::CurvatureColormap::Invert(Eigen::Vector3d(qRed(c), qGreen(c), qBlue(c))).t;
-      f.known[size_t(y) * f.w + x] = 1;
+      const auto inv =
+          vcg_ext::CurvatureColormap::Invert(Eigen::Vector3d(qRed(c), qGreen(c), qBlue(c)));
+      const size_t i = size_t(y) * f.w + x;
+      if (qGray(mask.pixel(x, y)) > 127) {
+        // A hole pixel still painted with the colour map carries the coarse fill's curvature.
+        if (inv.distance < kOnColormap) f.prior[i] = inv.t, f.prior_weight[i] = kCoarsePrior;
+        continue;
+      }
+      f.v[i] = inv.t;
+      f.known[i] = 1;
     }
   return f;
 }
-
-// The energy of the continuation, on the <= 256-pixel grid: thin plate (squared Laplacian),
-// plus a membrane term (squared gradient) that keeps a steep border from overshooting, plus a
-// weak pull towards flat (value 0.5), the safest guess far from any border. The two weights
-// were chosen on the public cases of the inpainting benchmark (bench/run_inpaint_bench.py);
-// there the pure thin plate overshoots on the Igea nose and the falcon's base.
-constexpr double kMembrane = 0.3;
-constexpr double kScreening = 1e-4;
 
 /// Minimises that energy over the unknown pixels with the known ones fixed. Exact for
 /// harmonic fields, up to the weak pull towards flat.
@@ -91,20 +109,26 @@ bool SolveBiharmonic(Field& f) {
       }
     }
   // Unknown pixels no stencil reaches (an image-wide hole's corners) stay put.
-  for (int i = 0; i < n; ++i) a.emplace_back(i, i, 1e-9 + kScreening), b[i] += kScreening * 0.5;
+  for (size_t i = 0; i < f.v.size(); ++i) {
+    if (index[i] < 0) continue;
+    a.emplace_back(index[i], index[i], 1e-9 + kScreening + f.prior_weight[i]);
+    b[index[i]] += kScreening * 0.5 + f.prior_weight[i] * f.prior[i];
+  }
   for (int y = 0; y < f.h; ++y)
-      for (int x = 0; x < f.w; ++x) {
-        const int i = index[size_t(y) * f.w + x];
-        if (i < 0) continue;
-        for (int k = 1; k < 5; ++k) {
-          const int nx = x + dx[k], ny = y + dy[k];
-          if (nx < 0 || ny < 0 || nx >= f.w || ny >= f.h) continue;
-          const int j = index[size_t(ny) * f.w + nx];
-          a.emplace_back(i, i, kMembrane);
-          if (j >= 0) a.emplace_back(i, j, -kMembrane);
-          else b[i] += kMembrane * f.at(nx, ny);
-        }
+    for (int x = 0; x < f.w; ++x) {
+      const int i = index[size_t(y) * f.w + x];
+      if (i < 0) continue;
+      for (int k = 1; k < 5; ++k) {
+        const int nx = x + dx[k], ny = y + dy[k];
+        if (nx < 0 || ny < 0 || nx >= f.w || ny >= f.h) continue;
+        const int j = index[size_t(ny) * f.w + nx];
+        a.emplace_back(i, i, kMembrane);
+        if (j >= 0)
+          a.emplace_back(i, j, -kMembrane);
+        else
+          b[i] += kMembrane * f.at(nx, ny);
       }
+    }
   Eigen::SparseMatrix<double> A(n, n);
   A.setFromTriplets(a.begin(), a.end());
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
@@ -123,6 +147,8 @@ Field Downsample(const Field& f, int factor) {
   c.h = (f.h + factor - 1) / factor;
   c.v.assign(size_t(c.w) * c.h, 0.5);
   c.known.assign(size_t(c.w) * c.h, 1);
+  c.prior.assign(c.v.size(), 0.0);
+  c.prior_weight.assign(c.v.size(), 0.0);
   std::vector<int> count(c.v.size(), 0);
   std::vector<double> sum(c.v.size(), 0.0);
   for (int y = 0; y < f.h; ++y)
@@ -130,9 +156,16 @@ Field Downsample(const Field& f, int factor) {
       const size_t ci = size_t(y / factor) * c.w + x / factor;
       if (!f.is_known(x, y)) c.known[ci] = 0;
       sum[ci] += f.at(x, y);
+      const size_t i = size_t(y) * f.w + x;
+      c.prior[ci] += f.prior_weight[i] * f.prior[i];
+      c.prior_weight[ci] += f.prior_weight[i];
       ++count[ci];
     }
-  for (size_t i = 0; i < c.v.size(); ++i) c.v[i] = count[i] ? sum[i] / count[i] : 0.5;
+  for (size_t i = 0; i < c.v.size(); ++i) {
+    c.v[i] = count[i] ? sum[i] / count[i] : 0.5;
+    c.prior[i] = c.prior_weight[i] > 0 ? c.prior[i] / c.prior_weight[i] : 0.5;
+    if (count[i]) c.prior_weight[i] /= count[i];
+  }
   return c;
 }
 
