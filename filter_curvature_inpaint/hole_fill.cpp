@@ -3,6 +3,7 @@
 #include "pipeline.h"
 
 #include <vcg_ext/curvature_colormap.h>
+#include <vcg_ext/self_intersections.h>
 
 #include <QColor>
 #include <QDir>
@@ -209,8 +210,16 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
         dr = vcg_ext::DeformToCurvaturePaper(points, hi.patch.triangles, free, target, hi.scale,
                                              params.paper);
       }
-      // Back off towards the coarse fill while the deformation folds a triangle over.
-      for (int backoff = 0; dr.solved && Folded(hi.patch.points, points, hi.patch) > 0; ++backoff) {
+      // Back off towards the coarse fill while the deformation folds a triangle over or makes
+      // the fill cross the patch (crossings the coarse fill already had do not count).
+      const int crossings_before =
+          vcg_ext::CountSelfIntersections(hi.patch.points, hi.patch.triangles, hi.patch.is_fill);
+      auto broken = [&] {
+        return Folded(hi.patch.points, points, hi.patch) > 0 ||
+               vcg_ext::CountSelfIntersections(points, hi.patch.triangles, hi.patch.is_fill) >
+                   crossings_before;
+      };
+      for (int backoff = 0; dr.solved && broken(); ++backoff) {
         if (backoff == 4) {
           dr.solved = false;
           break;
@@ -223,7 +232,8 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
       report.differing = dr.differing;
       report.max_move = dr.max_move;
       if (!dr.solved) {
-        report.problem = "the deformation would fold the patch; it keeps its coarse fill";
+        report.problem = "the deformation would fold the patch or make it cross itself; it keeps "
+                         "its coarse fill";
         result.holes.push_back(report);
         continue;
       }
