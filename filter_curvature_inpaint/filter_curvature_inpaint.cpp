@@ -2,12 +2,25 @@
 
 #include "curvature_images.h"
 #include "hole_fill.h"
+#include "hole_fill_dialog.h"
 #include "pipeline.h"
 
+#include <QApplication>
 #include <QDir>
 #include <QFileInfo>
 
+#include <cstdlib>
+
 namespace {
+
+/// Whether the filter runs in the MeshLab GUI, where Curvature Inpaint Hole Fill opens its own
+/// dialog. meshlabserver and scripts never block on one (nor does the GUI when
+/// CURVATURE_INPAINT_NO_DIALOG is set: it then shows MeshLab's parameter dialog).
+bool InteractiveSession() {
+  return qobject_cast<QApplication*>(QCoreApplication::instance()) != nullptr &&
+         QCoreApplication::applicationName().startsWith("MeshLab") &&
+         std::getenv("CURVATURE_INPAINT_NO_DIALOG") == nullptr;
+}
 
 // The paper's two constants, shared by Curvature Inpaint Hole Fill and Deform to Curvature Image.
 void AddPaperModeParams(RichParameterList& par) {
@@ -157,6 +170,9 @@ void FilterCurvatureInpaintPlugin::initParameterSet(QAction* action, MeshModel&,
     break;
   }
   case FP_HOLE_FILL: {
+    // In the GUI the product's dialog takes the parameters (applyHoleFillInteractive); with
+    // none declared, MeshLab goes straight to applyFilter instead of its generic dialog.
+    if (InteractiveSession()) break;
     const curvature_inpaint::HoleFillParams d;
     QStringList backends;
     for (const auto& b : curvature_inpaint::InpaintBackends())
@@ -192,6 +208,8 @@ void FilterCurvatureInpaintPlugin::initParameterSet(QAction* action, MeshModel&,
                  "matches the image. paper: the paper's small steps of control vertices."));
     par.addParam(RichInt("MaxHoleSize", 0, "Max size to be closed",
                          "Holes with more boundary edges stay open. 0: every hole."));
+    par.addParam(RichBool("Selected", false, "Close holes with selected faces",
+                          "Only the holes with a selected face on their border are filled."));
     par.addParam(RichInt("ImageSize", 512, "Image size (pixels)",
                          "Side of the curvature images given to the inpainter."));
     par.addParam(RichString("OutputFolder", "", "Output folder",
@@ -235,6 +253,8 @@ bool FilterCurvatureInpaintPlugin::applyFilter(QAction* action, MeshDocument& md
   case FP_CURVATURE_IMAGES:
     return applyCurvatureImages(*md.mm(), par, cb);
   case FP_HOLE_FILL:
+    if (!par.hasParameter("Backend") && InteractiveSession())
+      return applyHoleFillInteractive(*md.mm(), cb);
     return applyHoleFill(*md.mm(), par, cb);
   case FP_DEFORM_TO_IMAGE: {
     curvature_inpaint::HoleFillParams p;
@@ -321,16 +341,34 @@ bool FilterCurvatureInpaintPlugin::applyHoleFill(MeshModel& mm, const RichParame
   p.pick = std::max(0, par.getInt("Variation"));
   ReadDeformationParams(par, p);
   p.images.coarse.max_hole_edges = std::max(0, par.getInt("MaxHoleSize"));
+  p.images.coarse.selected_only = par.getBool("Selected");
   p.images.image_size = std::max(16, std::min(4096, par.getInt("ImageSize")));
   p.images_dir = par.getString("OutputFolder").trimmed().toStdString();
   return runHoleFill(mm, p, cb);
 }
 
-bool FilterCurvatureInpaintPlugin::runHoleFill(MeshModel& mm,
-                                               const curvature_inpaint::HoleFillParams& p,
-                                               vcg::CallBackPos* cb) {
+bool FilterCurvatureInpaintPlugin::applyHoleFillInteractive(MeshModel& mm, vcg::CallBackPos* cb) {
+  curvature_inpaint::HoleFillDialog dialog(mm.cm, QApplication::activeWindow());
+  // MeshLab shows a wait cursor while a filter runs; the dialog is for pointing and clicking.
+  QApplication::setOverrideCursor(Qt::ArrowCursor);
+  const int answer = dialog.exec();
+  QApplication::restoreOverrideCursor();
+  if (answer != QDialog::Accepted) {
+    Log("Curvature Inpaint Hole Fill: cancelled; the mesh was not changed.");
+    return true;
+  }
+  curvature_inpaint::HoleFillParams p = dialog.Params();
+  p.images.coarse.select_new_faces = true;
+  if (!runHoleFill(mm, p, cb, &dialog.Holes())) return false;
+  mm.updateDataMask(MeshModel::MM_FACEFLAGSELECT);
+  return true;
+}
+
+bool FilterCurvatureInpaintPlugin::runHoleFill(
+    MeshModel& mm, const curvature_inpaint::HoleFillParams& p, vcg::CallBackPos* cb,
+    const std::vector<curvature_inpaint::HoleVariations>* chosen) {
   try {
-    const auto result = curvature_inpaint::FillHoles(mm.cm, p, cb);
+    const auto result = curvature_inpaint::FillHoles(mm.cm, p, cb, chosen);
     for (const std::string& line : curvature_inpaint::DescribeHoleFill(result)) Log(line);
   } catch (const std::exception& e) {
     errorMessage =

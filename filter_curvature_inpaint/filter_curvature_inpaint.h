@@ -32,5 +32,7 @@ private:
   bool applyCoarseHoleFill(MeshModel& mm, const RichParameterList& par, vcg::CallBackPos* cb);
   bool applyCurvatureImages(MeshModel& mm, const RichParameterList& par, vcg::CallBackPos* cb);
   bool applyHoleFill(MeshModel& mm, const RichParameterList& par, vcg::CallBackPos* cb);
-  bool runHoleFill(MeshModel& mm, const curvature_inpaint::HoleFillParams& p, vcg::CallBackPos* cb);
+  bool applyHoleFillInteractive(MeshModel& mm, vcg::CallBackPos* cb);
+  bool runHoleFill(MeshModel& mm, const curvature_inpaint::HoleFillParams& p, vcg::CallBackPos* cb,
+                   const std::vector<curvature_inpaint::HoleVariations>* chosen = nullptr);
 };

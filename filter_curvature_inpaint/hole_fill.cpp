@@ -88,10 +88,88 @@ void SavePng(const QImage& image, const std::string& path) {
     throw std::runtime_error("cannot write " + path);
 }
 
+/// Scores every variation and takes the best, or the given pick.
+void ScoreAndPick(HoleVariations& hv, int pick) {
+  hv.scores.clear();
+  for (const QImage& v : hv.variations) hv.scores.push_back(ScoreVariation(v, hv.mask));
+  hv.pick = pick > 0
+                ? std::min(pick, int(hv.variations.size()))
+                : int(std::max_element(hv.scores.begin(), hv.scores.end()) - hv.scores.begin()) + 1;
+}
+
+/// Stage 8 for one hole: from the backend, or from the folder a person inpainted by hand in.
+HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& params,
+                           const InpaintParams& inpaint) {
+  HoleVariations hv;
+  hv.images_s = hi.seconds;
+  if (!hi.problem.empty()) {
+    hv.problem = hi.problem;
+    return hv;
+  }
+  const auto t = Clock::now();
+  hv.image = ToQImage(hi.image, false);
+  hv.mask = MaskImage(hi.image);
+  if (params.inpainted_dir.empty()) {
+    hv.variations = Inpaint(hv.image, hv.mask, inpaint);
+  } else {
+    const std::string base = params.inpainted_dir + "/hole_" + std::to_string(k + 1);
+    CheckMatchesFolder(base + ".json", hi);
+    QImage done(QString::fromStdString(base + "_inpainted.png"));
+    if (done.isNull()) {
+      hv.problem = "no " + base + "_inpainted.png; it keeps its coarse fill";
+      return hv;
+    }
+    hv.variations = {KnownPixelsKept(done, hv.image, hv.mask)};
+  }
+  hv.inpaint_s = Since(t);
+  ScoreAndPick(hv, params.pick);
+  return hv;
+}
+
+/// The inpainting parameters with the callback as the network layer's cancel hook.
+InpaintParams WithCancel(const HoleFillParams& params, vcg::CallBackPos* cb, const int* progress) {
+  InpaintParams inpaint = params.inpaint;
+  if (cb)
+    inpaint.http.cancelled = [cb, progress] {
+      return !cb(*progress, "Curvature Inpaint: waiting for the inpainter");
+    };
+  return inpaint;
+}
+
 } // namespace
 
-double ScoreVariation(const QImage& variation, const vcg_ext::CurvatureImage& image) {
-  const int n = image.size;
+void InpaintAgain(HoleVariations& hole, const InpaintParams& params) {
+  if (hole.image.isNull()) throw std::runtime_error("this hole has no curvature image");
+  const auto t = Clock::now();
+  hole.variations = Inpaint(hole.image, hole.mask, params);
+  hole.inpaint_s = Since(t);
+  ScoreAndPick(hole, 0);
+}
+
+std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& params,
+                                         vcg::CallBackPos* cb) {
+  CurvatureImagesParams ip = params.images;
+  ip.color_vertices = false;
+  const CurvatureImagesResult images = ComputeCurvatureImages(scratch, ip, cb);
+  int progress = 0;
+  const InpaintParams inpaint = WithCancel(params, cb, &progress);
+  std::vector<HoleVariations> holes;
+  for (size_t k = 0; k < images.holes.size(); ++k) {
+    progress = int(100.0 * k / images.holes.size());
+    if (cb &&
+        !cb(progress, ("Curvature Inpaint: inpainting hole " + std::to_string(k + 1)).c_str()))
+      throw vcg_ext::CancelledError();
+    holes.push_back(InpaintHole(images.holes[k], k, params, inpaint));
+  }
+  return holes;
+}
+
+double ScoreVariation(const QImage& variation, const QImage& mask) {
+  const int n = mask.width();
+  if (variation.size() != mask.size() || mask.height() != n) return -1e9;
+  std::vector<char> hole(size_t(n) * n);
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) hole[size_t(y) * n + x] = qGray(mask.pixel(x, y)) > 127;
   std::vector<double> value(size_t(n) * n);
   std::vector<double> known;
   double palette = 0;
@@ -102,7 +180,7 @@ double ScoreVariation(const QImage& variation, const vcg_ext::CurvatureImage& im
       const auto inv =
           vcg_ext::CurvatureColormap::Invert(Eigen::Vector3d(qRed(c), qGreen(c), qBlue(c)));
       value[size_t(y) * n + x] = inv.t;
-      if (image.hole[size_t(y) * n + x])
+      if (hole[size_t(y) * n + x])
         palette += inv.distance, ++hole_pixels;
       else
         known.push_back(inv.t);
@@ -115,11 +193,11 @@ double ScoreVariation(const QImage& variation, const vcg_ext::CurvatureImage& im
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x) {
       const size_t i = size_t(y) * n + x;
-      if (!image.hole[i]) continue;
+      if (!hole[i]) continue;
       if (value[i] < lo || value[i] > hi) ++outside;
       for (int k = 0; k < 4; ++k) {
         const int nx = x + (k == 0) - (k == 1), ny = y + (k == 2) - (k == 3);
-        if (nx < 0 || ny < 0 || nx >= n || ny >= n || image.hole[size_t(ny) * n + nx]) continue;
+        if (nx < 0 || ny < 0 || nx >= n || ny >= n || hole[size_t(ny) * n + nx]) continue;
         jump += std::abs(value[i] - value[size_t(ny) * n + nx]);
         ++border;
       }
@@ -128,7 +206,8 @@ double ScoreVariation(const QImage& variation, const vcg_ext::CurvatureImage& im
   return -(continuity + palette / hole_pixels / 255.0 + 0.5 * outside / hole_pixels);
 }
 
-HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackPos* cb) {
+HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackPos* cb,
+                         const std::vector<HoleVariations>* chosen) {
   if (params.mode != "direct" && params.mode != "paper")
     throw std::runtime_error("unknown mode \"" + params.mode + "\" (direct or paper)");
   if (!params.images_dir.empty() && !QDir().mkpath(QString::fromStdString(params.images_dir)))
@@ -140,12 +219,13 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
   CurvatureImagesResult images = ComputeCurvatureImages(m, ip, cb);
   result.coarse = images.coarse;
   try {
-    InpaintParams inpaint = params.inpaint;
+    if (chosen && chosen->size() != images.holes.size())
+      throw std::runtime_error("the previewed variations are for " +
+                               std::to_string(chosen->size()) + " holes, the mesh has " +
+                               std::to_string(images.holes.size()) +
+                               ": preview again with the same settings");
     int progress = 0;
-    if (cb)
-      inpaint.http.cancelled = [cb, &progress] {
-        return !cb(progress, "Curvature Inpaint: waiting for the inpainter");
-      };
+    const InpaintParams inpaint = WithCancel(params, cb, &progress);
     std::vector<QImage> montage_rows;
     for (size_t k = 0; k < images.holes.size(); ++k) {
       const HoleImage& hi = images.holes[k];
@@ -156,47 +236,45 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
       report.coarse_s = result.coarse.holes[hi.hole].seconds;
       report.images_s = hi.seconds;
       progress = int(100.0 * k / images.holes.size());
-      if (!hi.problem.empty()) {
-        report.problem = hi.problem;
+      if (!chosen && cb &&
+          !cb(progress, ("Curvature Inpaint: inpainting hole " + std::to_string(k + 1)).c_str()))
+        throw vcg_ext::CancelledError();
+      HoleVariations hv;
+      if (chosen) {
+        hv = (*chosen)[k];
+        if (hv.problem.empty() && (hv.image.size() != QSize(hi.image.size, hi.image.size) ||
+                                   ToQImage(hi.image, false) != hv.image))
+          throw std::runtime_error(
+              "the previewed hole " + std::to_string(k + 1) +
+              " differs from the mesh's: preview again with the same settings");
+        if (!hi.problem.empty()) hv.problem = hi.problem;
+        if (hv.problem.empty() && hv.pick == 0) hv.problem = "skipped; it keeps its coarse fill";
+        if (hv.problem.empty() && (hv.pick < 0 || hv.pick > int(hv.variations.size())))
+          throw std::invalid_argument("hole " + std::to_string(k + 1) + " has no variation " +
+                                      std::to_string(hv.pick));
+      } else {
+        hv = InpaintHole(hi, k, params, inpaint);
+      }
+      report.inpaint_s = hv.inpaint_s;
+      report.scores = hv.scores;
+      report.pick = hv.pick;
+      if (!hv.problem.empty()) {
+        report.problem = hv.problem;
         result.holes.push_back(report);
         continue;
       }
-      if (cb &&
-          !cb(progress, ("Curvature Inpaint: inpainting hole " + std::to_string(k + 1)).c_str()))
-        throw vcg_ext::CancelledError();
-      auto t = Clock::now();
-      const QImage image = ToQImage(hi.image, false), mask = MaskImage(hi.image);
-      std::vector<QImage> variations;
-      if (params.inpainted_dir.empty()) {
-        variations = Inpaint(image, mask, inpaint);
-      } else {
-        const std::string base = params.inpainted_dir + "/hole_" + std::to_string(k + 1);
-        CheckMatchesFolder(base + ".json", hi);
-        QImage done(QString::fromStdString(base + "_inpainted.png"));
-        if (done.isNull()) {
-          report.problem = "no " + base + "_inpainted.png; it keeps its coarse fill";
-          result.holes.push_back(report);
-          continue;
-        }
-        variations = {KnownPixelsKept(done, image, mask)};
-      }
-      report.inpaint_s = Since(t);
-      for (const QImage& v : variations) report.scores.push_back(ScoreVariation(v, hi.image));
-      report.pick = params.pick > 0
-                        ? std::min(params.pick, int(variations.size()))
-                        : int(std::max_element(report.scores.begin(), report.scores.end()) -
-                              report.scores.begin()) +
-                              1;
-      const QImage& chosen = variations[report.pick - 1];
+      const QImage &image = hv.image, &mask = hv.mask;
+      const std::vector<QImage>& variations = hv.variations;
+      const QImage& target_image = variations[report.pick - 1];
 
-      t = Clock::now();
+      const auto t = Clock::now();
       std::vector<char> free(hi.patch.points.size(), 1);
       for (size_t f = 0; f < hi.patch.triangles.size(); ++f)
         if (!hi.patch.is_fill[f])
           for (int v : hi.patch.triangles[f]) free[v] = 0;
       std::vector<double> target(hi.patch.points.size(), 0.5);
       for (size_t i = 0; i < target.size(); ++i)
-        if (free[i]) target[i] = SampleValue(chosen, hi.uv.uv[i]);
+        if (free[i]) target[i] = SampleValue(target_image, hi.uv.uv[i]);
       std::vector<Eigen::Vector3d> points = hi.patch.points;
       vcg_ext::DeformationResult dr;
       if (params.mode == "direct") {

@@ -40,19 +40,42 @@ struct HoleFillReport {
   std::string problem; ///< why the hole kept its coarse fill; empty if none
 };
 
+/// One hole's inpainting (stages 3-8) as a person previews it and FillHoles applies it.
+struct HoleVariations {
+  QImage image, mask;             ///< the coarse curvature image and its hole (white)
+  std::vector<QImage> variations; ///< the backend's completions of `image`
+  std::vector<double> scores;     ///< ScoreVariation of each
+  int pick = 0;                   ///< 1-based; 0: the hole keeps its coarse fill
+  std::string problem;            ///< why there is nothing to choose from; empty if none
+  double images_s = 0, inpaint_s = 0;
+};
+
 struct HoleFillResult {
   vcg_ext::CoarseFillResult coarse;
   std::vector<HoleFillReport> holes;
 };
 
-/// Fills the holes of `m` with detail. Throws InvalidMeshError, InpaintError (a backend
-/// failed), CancelledError or std::runtime_error, with `m` exactly as it was.
-HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackPos* cb = nullptr);
+/// Fills the holes of `m` with detail. With `chosen` (from InpaintHoles on a copy of `m` with
+/// the same parameters, picks possibly changed) the backend is not asked again: each hole is
+/// deformed to its chosen variation, or keeps its coarse fill where the pick is 0. Throws
+/// InvalidMeshError, InpaintError (a backend failed), CancelledError or std::runtime_error
+/// (also when `chosen` does not match the holes), with `m` exactly as it was.
+HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackPos* cb = nullptr,
+                         const std::vector<HoleVariations>* chosen = nullptr);
+
+/// Stages 0-8 for a preview: fills the holes of `scratch` coarsely (pass a copy of the mesh;
+/// it is changed) and returns every hole's curvature image with its scored variations and the
+/// automatic pick (params.pick when given). Throws like FillHoles.
+std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& params,
+                                         vcg::CallBackPos* cb = nullptr);
+
+/// Asks the backend again for one hole (a "re-roll"): new variations, scores and pick.
+void InpaintAgain(HoleVariations& hole, const InpaintParams& params);
 
 /// Scores a variation without ground truth (higher is better): how continuously the value
 /// field crosses the hole's border, how close the hole's colours stay to the palette, and how
 /// far its values leave the known ring's range.
-double ScoreVariation(const QImage& variation, const vcg_ext::CurvatureImage& image);
+double ScoreVariation(const QImage& variation, const QImage& mask);
 
 std::vector<std::string> DescribeHoleFill(const HoleFillResult& result);
 

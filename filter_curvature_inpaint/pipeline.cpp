@@ -19,6 +19,30 @@ MeshCheckpoint::MeshCheckpoint(CMeshO& m) : m_(m), vn_(m.vert.size()), fn_(m.fac
   for (const auto& f : m.face) selected_.push_back(f.IsS());
 }
 
+void CopyMesh(const CMeshO& from, CMeshO& to) {
+  to.Clear();
+  std::vector<int> index(from.vert.size(), -1);
+  int live = 0;
+  for (size_t v = 0; v < from.vert.size(); ++v)
+    if (!from.vert[v].IsD()) index[v] = live++;
+  auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(to, live);
+  for (size_t v = 0; v < from.vert.size(); ++v)
+    if (!from.vert[v].IsD()) {
+      vi->P() = from.vert[v].cP();
+      (vi++)->N() = from.vert[v].cN();
+    }
+  int faces = 0;
+  for (const auto& f : from.face) faces += !f.IsD();
+  auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(to, faces);
+  for (const auto& f : from.face) {
+    if (f.IsD()) continue;
+    for (int k = 0; k < 3; ++k) fi->V(k) = &to.vert[index[vcg::tri::Index(from, f.cV(k))]];
+    if (f.IsS()) fi->SetS();
+    ++fi;
+  }
+  vcg::tri::UpdateBounding<CMeshO>::Box(to);
+}
+
 void MeshCheckpoint::Restore() {
   for (size_t f = fn_; f < m_.face.size(); ++f)
     if (!m_.face[f].IsD()) vcg::tri::Allocator<CMeshO>::DeleteFace(m_, m_.face[f]);

@@ -29,6 +29,10 @@ private:
   std::vector<char> selected_;
 };
 
+/// Copies what the fill reads (live vertices and faces, positions, face selection) into
+/// `to`, compacted and in the same order: the fill of the copy equals the fill of `from`.
+void CopyMesh(const CMeshO& from, CMeshO& to);
+
 /// One line per hole, then a summary line.
 std::vector<std::string> DescribeCoarseFill(const vcg_ext::CoarseFillResult& result);
 

@@ -12,6 +12,7 @@
 #include <chrono>
 
 #include <cstdlib>
+#include <map>
 #include <thread>
 
 namespace curvature_inpaint {
@@ -164,7 +165,7 @@ std::vector<QImage> OpenAi(const QImage& image, const QImage& mask, const Inpain
   const std::string backend = "openai";
   const std::string key = Env("OPENAI_API_KEY");
   if (key.empty()) throw InpaintError(backend + ": set OPENAI_API_KEY to the API key to use");
-  const std::string model = p.model.empty() ? "dall-e-2" : p.model;
+  const std::string model = p.model.empty() ? DescribeBackend(backend).default_model : p.model;
   if (model != "dall-e-2" && model != "gpt-image-1")
     throw InpaintError(backend + ": unknown model \"" + model + "\" (dall-e-2 or gpt-image-1)");
   int size = 1024;
@@ -175,10 +176,11 @@ std::vector<QImage> OpenAi(const QImage& image, const QImage& mask, const Inpain
   const QImage rgba = WithTransparentHole(Scaled(image, size, size), Scaled(mask, size, size));
   HttpRequest req;
   req.method = "POST";
-  req.url = Trimmed(p.url.empty() ? (Env("OPENAI_BASE_URL").empty() ? "https://api.openai.com/v1"
-                                                                    : Env("OPENAI_BASE_URL"))
-                                  : p.url) +
-            "/images/edits";
+  req.url =
+      Trimmed(p.url.empty() ? (Env("OPENAI_BASE_URL").empty() ? DescribeBackend(backend).default_url
+                                                              : Env("OPENAI_BASE_URL"))
+                            : p.url) +
+      "/images/edits";
   req.headers = {"Authorization: Bearer " + key};
   const std::string png = Png(rgba);
   const std::string sz = std::to_string(size) + "x" + std::to_string(size);
@@ -225,7 +227,8 @@ std::vector<QImage> SdWebUi(const QImage& image, const QImage& mask, const Inpai
   body["sampler_name"] = "Euler a";
   HttpRequest req;
   req.method = "POST";
-  req.url = Trimmed(p.url.empty() ? "http://127.0.0.1:7860" : p.url) + "/sdapi/v1/img2img";
+  req.url = Trimmed(p.url.empty() ? DescribeBackend("sd-webui").default_url : p.url) +
+            "/sdapi/v1/img2img";
   req.headers = {"Content-Type: application/json"};
   const std::string auth = Env("SD_WEBUI_AUTH");
   if (!auth.empty())
@@ -254,7 +257,7 @@ std::vector<QImage> Stability(const QImage& image, const QImage& mask, const Inp
   for (int i = 0; i < std::max(1, p.variations); ++i) {
     HttpRequest req;
     req.method = "POST";
-    req.url = Trimmed(p.url.empty() ? "https://api.stability.ai" : p.url) +
+    req.url = Trimmed(p.url.empty() ? DescribeBackend(backend).default_url : p.url) +
               "/v2beta/stable-image/edit/inpaint";
     req.headers = {"authorization: Bearer " + key, "accept: application/json"};
     req.parts = {
@@ -294,7 +297,7 @@ QString JsonString(const std::string& s) {
 
 std::vector<QImage> ComfyUi(const QImage& image, const QImage& mask, const InpaintParams& p) {
   const std::string backend = "comfyui";
-  const std::string base = Trimmed(p.url.empty() ? "http://127.0.0.1:8188" : p.url);
+  const std::string base = Trimmed(p.url.empty() ? DescribeBackend("comfyui").default_url : p.url);
   const int size = std::max(64, (p.size > 0 ? p.size : 512) / 8 * 8);
   auto upload = [&](const QImage& img, const std::string& name) {
     HttpRequest req;
@@ -380,6 +383,20 @@ const std::vector<std::string>& InpaintBackends() {
   static const std::vector<std::string> names{"embedded", "openai", "sd-webui", "stability",
                                               "comfyui"};
   return names;
+}
+
+const BackendInfo& DescribeBackend(const std::string& backend) {
+  static const std::map<std::string, BackendInfo> info{
+      {"embedded", {"", "", false, ""}},
+      {"openai", {"https://api.openai.com/v1", "OPENAI_API_KEY", true, "dall-e-2"}},
+      {"sd-webui", {"http://127.0.0.1:7860", "SD_WEBUI_AUTH", false, ""}},
+      {"stability", {"https://api.stability.ai", "STABILITY_API_KEY", true, ""}},
+      {"comfyui", {"http://127.0.0.1:8188", "", false, ""}}};
+  const auto it = info.find(backend);
+  if (it == info.end())
+    throw InpaintError("unknown backend \"" + backend +
+                       "\" (embedded, openai, sd-webui, stability, comfyui)");
+  return it->second;
 }
 
 std::string DefaultPrompt(const std::string& backend) {

@@ -41,6 +41,17 @@ public:
 /// The backends this build knows.
 const std::vector<std::string>& InpaintBackends();
 
+/// What a front end needs to know of a backend to set it up.
+struct BackendInfo {
+  std::string default_url;   ///< where it is reached when no URL is given; empty: nowhere
+  std::string key_variable;  ///< environment variable with its credentials; empty: none
+  bool key_required = false; ///< whether the service refuses without them
+  std::string default_model; ///< empty: the service has no model choice
+};
+
+/// The backend's defaults. Throws InpaintError for an unknown backend.
+const BackendInfo& DescribeBackend(const std::string& backend);
+
 /// The prompt the backend gets when none is given (the paper's, where it gives one).
 std::string DefaultPrompt(const std::string& backend);
 

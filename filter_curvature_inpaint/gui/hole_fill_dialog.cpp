@@ -1,0 +1,487 @@
+#include "hole_fill_dialog.h"
+
+#include "pipeline.h"
+
+#include <vcg_ext/mesh_errors.h>
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPainter>
+#include <QPointer>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSettings>
+#include <QSpinBox>
+#include <QThread>
+#include <QVBoxLayout>
+
+#include <cstdlib>
+
+namespace curvature_inpaint {
+
+namespace {
+
+constexpr int kThumbnail = 160;
+
+// vcg::CallBackPos is a plain function pointer: the running worker's dialog and cancel flag
+// live here. The dialog is modal and runs one worker at a time.
+QPointer<HoleFillDialog> g_worker_dialog;
+std::shared_ptr<std::atomic<bool>> g_worker_cancel;
+QProgressBar* g_worker_progress = nullptr;
+QLabel* g_worker_status = nullptr;
+
+bool WorkerProgress(const int pos, const char* text) {
+  const QString message = QString::fromUtf8(text);
+  if (g_worker_dialog)
+    QMetaObject::invokeMethod(
+        g_worker_dialog.data(),
+        [pos, message] {
+          if (g_worker_progress) g_worker_progress->setValue(pos);
+          if (g_worker_status) g_worker_status->setText(message);
+        },
+        Qt::QueuedConnection);
+  return !(g_worker_cancel && *g_worker_cancel);
+}
+
+/// The coarse curvature image with the hole's border drawn in white.
+QImage Outlined(const QImage& image, const QImage& mask) {
+  QImage out = image.convertToFormat(QImage::Format_RGB32);
+  auto hole = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < mask.width() && y < mask.height() &&
+           qGray(mask.pixel(x, y)) > 127;
+  };
+  for (int y = 0; y < out.height(); ++y)
+    for (int x = 0; x < out.width(); ++x)
+      if (hole(x, y) && (!hole(x + 1, y) || !hole(x - 1, y) || !hole(x, y + 1) || !hole(x, y - 1)))
+        for (int d = 0; d < 2; ++d)
+          if (x + d < out.width()) out.setPixel(x + d, y, qRgb(255, 255, 255));
+  return out;
+}
+
+QPixmap Thumbnail(const QImage& image) {
+  return QPixmap::fromImage(
+      image.scaled(kThumbnail, kThumbnail, Qt::KeepAspectRatio, Qt::SmoothTransformation));
+}
+
+QString Key(const QString& backend, const char* field) {
+  return backend + "/" + field;
+}
+
+} // namespace
+
+HoleFillDialog::HoleFillDialog(const CMeshO& mesh, QWidget* parent)
+    : QDialog(parent), mesh_(mesh), cancel_requested_(std::make_shared<std::atomic<bool>>(false)) {
+  setWindowTitle("Curvature Inpaint Hole Fill");
+  setObjectName("curvatureInpaintDialog");
+  auto* form = new QFormLayout;
+
+  backend_ = new QComboBox;
+  backend_->setObjectName("backend");
+  for (const auto& b : InpaintBackends()) backend_->addItem(QString::fromStdString(b));
+  backend_->setToolTip("Who completes the curvature images: embedded (offline, this computer), "
+                       "OpenAI (DALL-E 2), a Stable Diffusion web UI, Stability AI, or ComfyUI.");
+  form->addRow("&Backend", backend_);
+  url_ = new QLineEdit;
+  url_->setObjectName("url");
+  url_->setToolTip("The service's address; empty: the backend's default (shown greyed).");
+  form->addRow("Server &URL", url_);
+  model_ = new QLineEdit;
+  model_->setObjectName("model");
+  model_->setToolTip("OpenAI: dall-e-2 (the paper's) or gpt-image-1; empty: the default.");
+  form->addRow("&Model", model_);
+  key_ = new QLabel;
+  key_->setObjectName("keyStatus");
+  key_->setWordWrap(true);
+  form->addRow("API key", key_);
+  prompt_ = new QLineEdit;
+  prompt_->setObjectName("prompt");
+  prompt_->setToolTip("What the image model is told; the paper's prompt for the backend.");
+  form->addRow("&Prompt", prompt_);
+  negative_prompt_ = new QLineEdit;
+  negative_prompt_->setObjectName("negativePrompt");
+  negative_prompt_->setToolTip("Stable Diffusion backends: what the image should not show.");
+  form->addRow("&Negative prompt", negative_prompt_);
+  auto* reset = new QPushButton("&Reset prompts");
+  reset->setObjectName("resetPrompts");
+  reset->setToolTip("The backend's default prompt, URL and model.");
+  form->addRow("", reset);
+
+  variations_ = new QSpinBox;
+  variations_->setObjectName("variations");
+  variations_->setRange(1, 10);
+  variations_->setValue(4);
+  variations_->setToolTip("Inpainted variations per hole, to choose from.");
+  form->addRow("&Variations", variations_);
+  similitude_ = new QDoubleSpinBox;
+  similitude_->setObjectName("similitude");
+  similitude_->setRange(1, 255);
+  similitude_->setValue(30);
+  similitude_->setToolTip("Paper mode: a vertex moves when its colour differs from the image's "
+                          "by more than this in any channel (of 255; the paper's 30).");
+  form->addRow("&Similitude", similitude_);
+  transformation_constant_ = new QLineEdit("5e-05");
+  transformation_constant_->setObjectName("transformationConstant");
+  transformation_constant_->setToolTip("Paper mode: the step along the normal, as a fraction "
+                                       "of the mesh's bounding box (the paper's 0.00005).");
+  form->addRow("&Transformation constant", transformation_constant_);
+  mode_ = new QComboBox;
+  mode_->setObjectName("mode");
+  mode_->addItems({"direct", "paper"});
+  mode_->setToolTip("direct: solve once for the image's curvature (faster, the benchmark's "
+                    "best); paper: small steps along the normals, as in the paper.");
+  form->addRow("M&ode", mode_);
+  max_hole_edges_ = new QSpinBox;
+  max_hole_edges_->setObjectName("maxHoleEdges");
+  max_hole_edges_->setRange(0, 1000000);
+  max_hole_edges_->setSpecialValueText("any size");
+  max_hole_edges_->setToolTip("Holes with more boundary edges stay open; 0: fill every hole.");
+  form->addRow("Maximum hole size (edges)", max_hole_edges_);
+  selected_only_ = new QCheckBox("only holes beside selected faces");
+  selected_only_->setObjectName("selectedOnly");
+  form->addRow("Selection", selected_only_);
+
+  inpaint_ = new QPushButton("&Inpaint");
+  inpaint_->setObjectName("inpaint");
+  inpaint_->setToolTip("Fill coarsely, paint the curvature images and inpaint them (the mesh "
+                       "is not changed).");
+  apply_ = new QPushButton("&Apply");
+  apply_->setObjectName("apply");
+  apply_->setEnabled(false);
+  apply_->setToolTip("Deform every hole to its chosen variation and change the mesh.");
+  cancel_ = new QPushButton("Cancel");
+  cancel_->setObjectName("cancel");
+  cancel_->setToolTip("Stop the running step, or close without changing the mesh.");
+  progress_ = new QProgressBar;
+  progress_->setObjectName("progress");
+  progress_->setRange(0, 100);
+  progress_->setValue(0);
+  status_ = new QLabel;
+  status_->setObjectName("status");
+  auto* buttons = new QHBoxLayout;
+  buttons->addWidget(inpaint_);
+  buttons->addWidget(progress_, 1);
+  buttons->addWidget(apply_);
+  buttons->addWidget(cancel_);
+
+  auto* holes = new QWidget;
+  holes_layout_ = new QVBoxLayout(holes);
+  holes_layout_->addStretch(1);
+  auto* scroll = new QScrollArea;
+  scroll->setWidget(holes);
+  scroll->setWidgetResizable(true);
+  scroll->setMinimumSize(4 * (kThumbnail + 24) + 2 * kThumbnail, kThumbnail + 120);
+
+  auto* settings = new QGroupBox("Settings");
+  settings->setLayout(form);
+  auto* layout = new QVBoxLayout(this);
+  layout->addWidget(settings);
+  layout->addLayout(buttons);
+  layout->addWidget(status_);
+  layout->addWidget(scroll, 1);
+
+  LoadSettings();
+  connect(backend_, &QComboBox::currentTextChanged, this, &HoleFillDialog::BackendChanged);
+  connect(reset, &QPushButton::clicked, this, &HoleFillDialog::ResetPrompts);
+  connect(inpaint_, &QPushButton::clicked, this, &HoleFillDialog::Inpaint);
+  connect(cancel_, &QPushButton::clicked, this, &HoleFillDialog::CancelOrClose);
+  connect(apply_, &QPushButton::clicked, this, [this] {
+    SaveSettings();
+    accept();
+  });
+}
+
+HoleFillDialog::~HoleFillDialog() {
+  if (worker_) {
+    *cancel_requested_ = true;
+    worker_->wait();
+  }
+}
+
+HoleFillParams HoleFillDialog::Params() const {
+  HoleFillParams p;
+  p.inpaint.backend = backend_->currentText().toStdString();
+  p.inpaint.url = url_->text().trimmed().toStdString();
+  p.inpaint.model = model_->text().trimmed().toStdString();
+  p.inpaint.prompt = prompt_->text().toStdString();
+  p.inpaint.negative_prompt = negative_prompt_->text().toStdString();
+  p.inpaint.variations = variations_->value();
+  p.paper.similitude = similitude_->value();
+  bool ok = false;
+  const double tc = transformation_constant_->text().toDouble(&ok);
+  if (ok && tc > 0) p.paper.transformation_constant = tc;
+  p.mode = mode_->currentText().toStdString();
+  p.images.coarse.max_hole_edges = max_hole_edges_->value();
+  p.images.coarse.selected_only = selected_only_->isChecked();
+  p.images.image_size = 512;
+  return p;
+}
+
+void HoleFillDialog::BackendChanged() {
+  const QString backend = backend_->currentText();
+  QSettings s("curvature-inpaint", "hole-fill");
+  // Each backend keeps its own URL, model and prompts while the person switches between them.
+  if (!backend_shown_.isEmpty()) {
+    s.setValue(Key(backend_shown_, "url"), url_->text());
+    s.setValue(Key(backend_shown_, "model"), model_->text());
+    s.setValue(Key(backend_shown_, "prompt"), prompt_->text());
+    s.setValue(Key(backend_shown_, "negative_prompt"), negative_prompt_->text());
+  }
+  backend_shown_ = backend;
+  const BackendInfo& info = DescribeBackend(backend.toStdString());
+  url_->setText(s.value(Key(backend, "url")).toString());
+  url_->setPlaceholderText(QString::fromStdString(info.default_url));
+  url_->setEnabled(backend != "embedded");
+  model_->setText(s.value(Key(backend, "model")).toString());
+  model_->setPlaceholderText(QString::fromStdString(info.default_model));
+  model_->setEnabled(!info.default_model.empty());
+  prompt_->setText(
+      s.value(Key(backend, "prompt"), QString::fromStdString(DefaultPrompt(backend.toStdString())))
+          .toString());
+  prompt_->setEnabled(backend != "embedded");
+  negative_prompt_->setText(s.value(Key(backend, "negative_prompt")).toString());
+  negative_prompt_->setEnabled(backend == "sd-webui" || backend == "stability" ||
+                               backend == "comfyui");
+  const QString var = QString::fromStdString(info.key_variable);
+  if (var.isEmpty()) {
+    key_->setText("none needed");
+    key_->setStyleSheet("");
+  } else if (std::getenv(info.key_variable.c_str()) && *std::getenv(info.key_variable.c_str())) {
+    key_->setText("from the environment variable " + var + " (set)");
+    key_->setStyleSheet("");
+  } else {
+    key_->setText(QString("Warning: %1 is not set%2. Set it in the environment MeshLab starts "
+                          "from; keys are never stored.")
+                      .arg(var, info.key_required ? ": the service will refuse" : ""));
+    key_->setStyleSheet("color: #c03000; font-weight: bold");
+  }
+  key_->setProperty("missingKey", !var.isEmpty() && !(std::getenv(info.key_variable.c_str()) &&
+                                                      *std::getenv(info.key_variable.c_str())));
+}
+
+void HoleFillDialog::ResetPrompts() {
+  const std::string backend = backend_->currentText().toStdString();
+  prompt_->setText(QString::fromStdString(DefaultPrompt(backend)));
+  negative_prompt_->clear();
+  url_->clear();
+  model_->clear();
+}
+
+void HoleFillDialog::LoadSettings() {
+  QSettings s("curvature-inpaint", "hole-fill");
+  const int b = backend_->findText(s.value("backend", "embedded").toString());
+  backend_->setCurrentIndex(b < 0 ? 0 : b);
+  variations_->setValue(s.value("variations", 4).toInt());
+  similitude_->setValue(s.value("similitude", 30.0).toDouble());
+  transformation_constant_->setText(s.value("transformation_constant", "5e-05").toString());
+  const int m = mode_->findText(s.value("mode", "direct").toString());
+  mode_->setCurrentIndex(m < 0 ? 0 : m);
+  max_hole_edges_->setValue(s.value("max_hole_edges", 0).toInt());
+  selected_only_->setChecked(s.value("selected_only", false).toBool());
+  BackendChanged();
+}
+
+void HoleFillDialog::SaveSettings() const {
+  QSettings s("curvature-inpaint", "hole-fill");
+  const QString backend = backend_->currentText();
+  s.setValue("backend", backend);
+  s.setValue(Key(backend, "url"), url_->text());
+  s.setValue(Key(backend, "model"), model_->text());
+  s.setValue(Key(backend, "prompt"), prompt_->text());
+  s.setValue(Key(backend, "negative_prompt"), negative_prompt_->text());
+  s.setValue("variations", variations_->value());
+  s.setValue("similitude", similitude_->value());
+  s.setValue("transformation_constant", transformation_constant_->text());
+  s.setValue("mode", mode_->currentText());
+  s.setValue("max_hole_edges", max_hole_edges_->value());
+  s.setValue("selected_only", selected_only_->isChecked());
+}
+
+void HoleFillDialog::SetBusy(bool busy) {
+  inpaint_->setEnabled(!busy);
+  apply_->setEnabled(!busy && !holes_.empty());
+  for (auto* list : lists_) list->setEnabled(!busy);
+  cancel_->setText(busy ? "Stop" : "Cancel");
+  if (!busy) progress_->setValue(0);
+}
+
+void HoleFillDialog::RunWorker(std::function<void()> work, std::function<void()> done,
+                               const QString& what) {
+  if (worker_) return;
+  *cancel_requested_ = false;
+  g_worker_dialog = this;
+  g_worker_cancel = cancel_requested_;
+  g_worker_progress = progress_;
+  g_worker_status = status_;
+  status_->setText(what);
+  SetBusy(true);
+  auto error = std::make_shared<QString>();
+  worker_ = QThread::create([work, error] {
+    try {
+      work();
+    } catch (const vcg_ext::CancelledError&) {
+      *error = "Stopped.";
+    } catch (const std::exception& e) {
+      *error = QString::fromStdString(e.what());
+    }
+  });
+  connect(worker_, &QThread::finished, this, [this, error, done] {
+    worker_->deleteLater();
+    worker_ = nullptr;
+    g_worker_dialog = nullptr;
+    g_worker_progress = nullptr;
+    g_worker_status = nullptr;
+    if (error->isEmpty()) done();
+    SetBusy(false);
+    ShowHoles();
+    status_->setText(*error);
+    emit WorkerFinished(*error);
+  });
+  worker_->start();
+}
+
+void HoleFillDialog::Inpaint() {
+  SaveSettings();
+  // The worker gets its own copy: the mesh is never touched from another thread.
+  auto scratch = std::make_shared<CMeshO>();
+  CopyMesh(mesh_, *scratch);
+  const HoleFillParams params = Params();
+  auto result = std::make_shared<std::vector<HoleVariations>>();
+  holes_.clear();
+  ShowHoles();
+  RunWorker([scratch, params, result] { *result = InpaintHoles(*scratch, params, WorkerProgress); },
+            [this, result] {
+              holes_ = *result;
+              rerolls_.assign(holes_.size(), 0);
+            },
+            "Inpainting...");
+}
+
+void HoleFillDialog::ReRoll(int hole) {
+  if (hole < 0 || hole >= int(holes_.size()) || holes_[hole].image.isNull()) return;
+  InpaintParams params = Params().inpaint;
+  params.seed += 1000u * uint32_t(++rerolls_[hole]);
+  auto copy = std::make_shared<HoleVariations>(holes_[hole]);
+  RunWorker(
+      [copy, params] {
+        InpaintParams p = params;
+        p.http.cancelled = [] { return !WorkerProgress(50, "Curvature Inpaint: re-rolling"); };
+        InpaintAgain(*copy, p);
+      },
+      [this, hole, copy] {
+        if (hole < int(holes_.size())) holes_[hole] = *copy;
+      },
+      QString("Re-rolling hole %1...").arg(hole + 1));
+}
+
+void HoleFillDialog::CancelOrClose() {
+  if (worker_) {
+    *cancel_requested_ = true;
+    status_->setText("Stopping...");
+    return;
+  }
+  QDialog::reject();
+}
+
+void HoleFillDialog::reject() {
+  CancelOrClose();
+}
+
+void HoleFillDialog::ShowHoles() {
+  while (holes_layout_->count() > 1) {
+    QLayoutItem* item = holes_layout_->takeAt(0);
+    delete item->widget();
+    delete item;
+  }
+  lists_.clear();
+  int ready = 0;
+  for (size_t k = 0; k < holes_.size(); ++k) {
+    HoleVariations& hv = holes_[k];
+    auto* box = new QGroupBox(QString("Hole %1").arg(k + 1));
+    box->setObjectName(QString("hole_%1").arg(k + 1));
+    auto* row = new QHBoxLayout(box);
+    if (!hv.problem.empty()) {
+      row->addWidget(new QLabel(QString::fromStdString(hv.problem)));
+      holes_layout_->insertWidget(holes_layout_->count() - 1, box);
+      lists_.push_back(nullptr);
+      continue;
+    }
+    ++ready;
+    auto* coarse = new QLabel;
+    coarse->setPixmap(Thumbnail(Outlined(hv.image, hv.mask)));
+    coarse->setToolTip("The coarse fill's curvature; the hole is outlined.");
+    row->addWidget(coarse);
+    auto* list = new QListWidget;
+    list->setObjectName(QString("variations_%1").arg(k + 1));
+    list->setViewMode(QListView::IconMode);
+    list->setIconSize(QSize(kThumbnail, kThumbnail));
+    list->setFlow(QListView::LeftToRight);
+    list->setWrapping(false);
+    list->setMovement(QListView::Static);
+    list->setMinimumHeight(kThumbnail + 48);
+    const int best = int(std::max_element(hv.scores.begin(), hv.scores.end()) - hv.scores.begin());
+    for (size_t j = 0; j < hv.variations.size(); ++j) {
+      auto* item = new QListWidgetItem(QIcon(Thumbnail(hv.variations[j])),
+                                       QString("%1: %2%3")
+                                           .arg(j + 1)
+                                           .arg(hv.scores[j], 0, 'f', 4)
+                                           .arg(int(j) == best ? " (auto)" : ""));
+      if (int(j) == best) {
+        QFont f = item->font();
+        f.setBold(true);
+        item->setFont(f);
+      }
+      list->addItem(item);
+    }
+    if (hv.pick > 0) list->setCurrentRow(hv.pick - 1);
+    connect(list, &QListWidget::currentRowChanged, this, [this, k](int row) {
+      if (row >= 0) holes_[k].pick = row + 1;
+    });
+    connect(list, &QListWidget::itemDoubleClicked, this, [this, k, list](QListWidgetItem* item) {
+      const QImage& image = holes_[k].variations[size_t(list->row(item))];
+      QDialog big(this);
+      big.setWindowTitle(QString("Hole %1, variation %2").arg(k + 1).arg(list->row(item) + 1));
+      auto* label = new QLabel;
+      label->setPixmap(QPixmap::fromImage(image.scaled(512, 512, Qt::KeepAspectRatio)));
+      auto* l = new QVBoxLayout(&big);
+      l->addWidget(label);
+      big.exec();
+    });
+    row->addWidget(list, 1);
+    auto* side = new QVBoxLayout;
+    auto* reroll = new QPushButton("Re-roll");
+    reroll->setObjectName(QString("reroll_%1").arg(k + 1));
+    reroll->setToolTip("Ask the backend for new variations of this hole.");
+    connect(reroll, &QPushButton::clicked, this, [this, k] { ReRoll(int(k)); });
+    auto* skip = new QCheckBox("Skip");
+    skip->setObjectName(QString("skip_%1").arg(k + 1));
+    skip->setToolTip("Leave this hole with its smooth coarse fill.");
+    skip->setChecked(hv.pick == 0);
+    connect(skip, &QCheckBox::toggled, this, [this, k, list](bool on) {
+      holes_[k].pick = on ? 0 : std::max(1, list->currentRow() + 1);
+      list->setEnabled(!on);
+    });
+    side->addWidget(reroll);
+    side->addWidget(skip);
+    side->addStretch(1);
+    row->addLayout(side);
+    holes_layout_->insertWidget(holes_layout_->count() - 1, box);
+    lists_.push_back(list);
+  }
+  lists_.erase(std::remove(lists_.begin(), lists_.end(), nullptr), lists_.end());
+  setWindowTitle(holes_.empty() ? QString("Curvature Inpaint Hole Fill")
+                                : QString("Curvature Inpaint Hole Fill: %1 of %2 holes ready")
+                                      .arg(ready)
+                                      .arg(holes_.size()));
+  apply_->setEnabled(!worker_ && !holes_.empty());
+}
+
+} // namespace curvature_inpaint
