@@ -399,7 +399,7 @@ std::vector<std::string> DescribeHoleFill(const HoleFillResult& result) {
     } else {
       std::string scores;
       for (double s : r.scores)
-        scores += (scores.empty() ? "" : " ") + std::to_string(s).substr(0, 6);
+        scores += (scores.empty() ? "" : " ") + QString::number(s, 'g', 4).toStdString();
       std::snprintf(buf, sizeof buf,
                     "detail %zu: %d edges, variation %d of %zu (scores %s), %d deformation steps, "
                     "images %.0f ms, inpaint %.0f ms, deform %.0f ms",

@@ -13,7 +13,7 @@ packages=(
   qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev qttools5-dev-tools
   libglew-dev libglu1-mesa-dev libeigen3-dev libcurl4-openssl-dev
   libgtest-dev googletest
-  xvfb xauth
+  xvfb xauth xdotool x11-apps
   python3
 )
 

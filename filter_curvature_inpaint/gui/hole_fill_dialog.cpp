@@ -2,8 +2,6 @@
 
 #include "pipeline.h"
 
-#include <vcg_ext/mesh_errors.h>
-
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -82,6 +80,7 @@ HoleFillDialog::HoleFillDialog(const CMeshO& mesh, QWidget* parent)
     : QDialog(parent), mesh_(mesh), cancel_requested_(std::make_shared<std::atomic<bool>>(false)) {
   setWindowTitle("Curvature Inpaint Hole Fill");
   setObjectName("curvatureInpaintDialog");
+  resize(1000, 940);
   auto* form = new QFormLayout;
 
   backend_ = new QComboBox;
@@ -193,10 +192,7 @@ HoleFillDialog::HoleFillDialog(const CMeshO& mesh, QWidget* parent)
   connect(reset, &QPushButton::clicked, this, &HoleFillDialog::ResetPrompts);
   connect(inpaint_, &QPushButton::clicked, this, &HoleFillDialog::Inpaint);
   connect(cancel_, &QPushButton::clicked, this, &HoleFillDialog::CancelOrClose);
-  connect(apply_, &QPushButton::clicked, this, [this] {
-    SaveSettings();
-    accept();
-  });
+  connect(apply_, &QPushButton::clicked, this, &QDialog::accept);
 }
 
 HoleFillDialog::~HoleFillDialog() {
@@ -324,13 +320,13 @@ void HoleFillDialog::RunWorker(std::function<void()> work, std::function<void()>
   status_->setText(what);
   SetBusy(true);
   auto error = std::make_shared<QString>();
-  worker_ = QThread::create([work, error] {
+  const auto cancel = cancel_requested_;
+  worker_ = QThread::create([work, error, cancel] {
     try {
       work();
-    } catch (const vcg_ext::CancelledError&) {
-      *error = "Stopped.";
     } catch (const std::exception& e) {
-      *error = QString::fromStdString(e.what());
+      // A stop surfaces as CancelledError, or from the network layer as an InpaintError.
+      *error = *cancel ? QString("Stopped.") : QString::fromStdString(e.what());
     }
   });
   connect(worker_, &QThread::finished, this, [this, error, done] {
@@ -395,6 +391,11 @@ void HoleFillDialog::reject() {
   CancelOrClose();
 }
 
+void HoleFillDialog::done(int result) {
+  SaveSettings();
+  QDialog::done(result);
+}
+
 void HoleFillDialog::ShowHoles() {
   while (holes_layout_->count() > 1) {
     QLayoutItem* item = holes_layout_->takeAt(0);
@@ -429,11 +430,15 @@ void HoleFillDialog::ShowHoles() {
     list->setMinimumHeight(kThumbnail + 48);
     const int best = int(std::max_element(hv.scores.begin(), hv.scores.end()) - hv.scores.begin());
     for (size_t j = 0; j < hv.variations.size(); ++j) {
-      auto* item = new QListWidgetItem(QIcon(Thumbnail(hv.variations[j])),
-                                       QString("%1: %2%3")
-                                           .arg(j + 1)
-                                           .arg(hv.scores[j], 0, 'f', 4)
-                                           .arg(int(j) == best ? " (auto)" : ""));
+      // The same picture when selected: the selection shows as the frame and the bold label,
+      // not as a tint that would make the variation look different.
+      QIcon icon;
+      icon.addPixmap(Thumbnail(hv.variations[j]), QIcon::Normal);
+      icon.addPixmap(Thumbnail(hv.variations[j]), QIcon::Selected);
+      auto* item = new QListWidgetItem(icon, QString("%1: %2%3")
+                                                 .arg(j + 1)
+                                                 .arg(hv.scores[j], 0, 'f', 5)
+                                                 .arg(int(j) == best ? " (auto)" : ""));
       if (int(j) == best) {
         QFont f = item->font();
         f.setBold(true);

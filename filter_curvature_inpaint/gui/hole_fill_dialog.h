@@ -59,6 +59,7 @@ signals:
 
 protected:
   void reject() override;
+  void done(int result) override; ///< keeps the settings, whether applied or cancelled
 
 private:
   void BackendChanged();

@@ -1,0 +1,226 @@
+// The hole-fill dialog with real widgets on Qt's offscreen platform: defaults per backend,
+// persistence, the warning for a missing key, choosing and skipping variations, and cancel
+// during a network call.
+#include "hole_fill_dialog.h"
+#include "mesh_io.h"
+#include "pipeline.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTcpServer>
+#include <QTcpSocket>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cstdlib>
+#include <memory>
+
+using curvature_inpaint::HoleFillDialog;
+
+namespace {
+
+template <typename W> W* Find(const QWidget& dialog, const char* name) {
+  W* w = dialog.findChild<W*>(name);
+  if (!w) qFatal("no widget %s", name);
+  return w;
+}
+
+void ChooseBackend(HoleFillDialog& d, const char* backend) {
+  auto* combo = Find<QComboBox>(d, "backend");
+  combo->setCurrentIndex(combo->findText(backend));
+}
+
+} // namespace
+
+class DialogTest : public QObject {
+  Q_OBJECT
+
+private:
+  CMeshO mesh_;
+
+private slots:
+  void initTestCase() {
+    curvature_inpaint::LoadMesh(std::string(CI_SOURCE_DIR) + "/meshes/sample_holes.ply", mesh_);
+    QVERIFY(mesh_.vn > 0);
+  }
+
+  void init() { QSettings("curvature-inpaint", "hole-fill").clear(); }
+
+  void defaults_per_backend() {
+    HoleFillDialog d(mesh_);
+    QCOMPARE(Find<QComboBox>(d, "backend")->currentText(), QString("embedded"));
+    QCOMPARE(Find<QSpinBox>(d, "variations")->value(), 4);
+    QCOMPARE(Find<QDoubleSpinBox>(d, "similitude")->value(), 30.0);
+    QCOMPARE(Find<QLineEdit>(d, "transformationConstant")->text().toDouble(), 5e-5);
+    QCOMPARE(Find<QComboBox>(d, "mode")->currentText(), QString("direct"));
+    QVERIFY(!Find<QLineEdit>(d, "prompt")->isEnabled());
+
+    ChooseBackend(d, "openai");
+    QCOMPARE(Find<QLineEdit>(d, "prompt")->text(), QString("fill in the blanks"));
+    QCOMPARE(Find<QLineEdit>(d, "url")->placeholderText(), QString("https://api.openai.com/v1"));
+    QCOMPARE(Find<QLineEdit>(d, "model")->placeholderText(), QString("dall-e-2"));
+    QVERIFY(!Find<QLineEdit>(d, "negativePrompt")->isEnabled());
+
+    ChooseBackend(d, "sd-webui");
+    QVERIFY(Find<QLineEdit>(d, "prompt")->text().startsWith("Color map representing curvatures"));
+    QCOMPARE(Find<QLineEdit>(d, "url")->placeholderText(), QString("http://127.0.0.1:7860"));
+    QVERIFY(Find<QLineEdit>(d, "negativePrompt")->isEnabled());
+
+    // An edited prompt stays with its backend; Reset brings the default back.
+    Find<QLineEdit>(d, "prompt")->setText("a relief");
+    ChooseBackend(d, "openai");
+    ChooseBackend(d, "sd-webui");
+    QCOMPARE(Find<QLineEdit>(d, "prompt")->text(), QString("a relief"));
+    Find<QPushButton>(d, "resetPrompts")->click();
+    QVERIFY(Find<QLineEdit>(d, "prompt")->text().startsWith("Color map representing curvatures"));
+    QCOMPARE(d.Params().inpaint.backend, std::string("sd-webui"));
+  }
+
+  void settings_persist_but_keys_never() {
+    qputenv("OPENAI_API_KEY", "sk-dialogtest-0123456789");
+    {
+      HoleFillDialog d(mesh_);
+      ChooseBackend(d, "openai");
+      Find<QLineEdit>(d, "url")->setText("http://127.0.0.1:9");
+      Find<QLineEdit>(d, "prompt")->setText("a nose");
+      Find<QSpinBox>(d, "variations")->setValue(3);
+      Find<QDoubleSpinBox>(d, "similitude")->setValue(12);
+      Find<QComboBox>(d, "mode")->setCurrentIndex(1);
+      Find<QSpinBox>(d, "maxHoleEdges")->setValue(50);
+      Find<QPushButton>(d, "cancel")->click(); // closing keeps the settings too
+      QCOMPARE(d.result(), int(QDialog::Rejected));
+    }
+    HoleFillDialog d(mesh_);
+    QCOMPARE(Find<QComboBox>(d, "backend")->currentText(), QString("openai"));
+    QCOMPARE(Find<QLineEdit>(d, "url")->text(), QString("http://127.0.0.1:9"));
+    QCOMPARE(Find<QLineEdit>(d, "prompt")->text(), QString("a nose"));
+    QCOMPARE(Find<QSpinBox>(d, "variations")->value(), 3);
+    QCOMPARE(Find<QDoubleSpinBox>(d, "similitude")->value(), 12.0);
+    QCOMPARE(Find<QComboBox>(d, "mode")->currentText(), QString("paper"));
+    QCOMPARE(d.Params().images.coarse.max_hole_edges, 50);
+    QSettings settings("curvature-inpaint", "hole-fill");
+    settings.sync();
+    QFile file(settings.fileName());
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray stored = file.readAll();
+    QVERIFY(stored.contains("a nose"));
+    QVERIFY(!stored.contains("sk-dialogtest"));
+    QVERIFY(!Find<QLabel>(d, "keyStatus")->text().contains("sk-dialogtest"));
+    qunsetenv("OPENAI_API_KEY");
+  }
+
+  void warns_when_the_key_is_missing() {
+    qunsetenv("STABILITY_API_KEY");
+    HoleFillDialog d(mesh_);
+    ChooseBackend(d, "stability");
+    auto* key = Find<QLabel>(d, "keyStatus");
+    QVERIFY(key->property("missingKey").toBool());
+    QVERIFY(key->text().contains("STABILITY_API_KEY is not set"));
+    ChooseBackend(d, "embedded");
+    QVERIFY(!key->property("missingKey").toBool());
+    qputenv("STABILITY_API_KEY", "sk-another-0123456789");
+    ChooseBackend(d, "stability");
+    QVERIFY(!key->property("missingKey").toBool());
+    QVERIFY(key->text().contains("(set)"));
+    qunsetenv("STABILITY_API_KEY");
+  }
+
+  void inpaint_then_choose_and_skip_variations() {
+    const int vertices = mesh_.vn;
+    HoleFillDialog d(mesh_);
+    d.show();
+    Find<QSpinBox>(d, "variations")->setValue(3);
+    QVERIFY(!Find<QPushButton>(d, "apply")->isEnabled());
+    QTest::mouseClick(Find<QPushButton>(d, "inpaint"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!d.Busy(), 120000);
+    QCOMPARE(mesh_.vn, vertices); // the preview works on a copy
+    QCOMPARE(int(d.Holes().size()), 3);
+    for (const auto& hole : d.Holes()) {
+      QVERIFY(hole.problem.empty());
+      QCOMPARE(int(hole.variations.size()), 3);
+      const int best = int(std::max_element(hole.scores.begin(), hole.scores.end()) -
+                           hole.scores.begin()) +
+                       1;
+      QCOMPARE(hole.pick, best);
+    }
+    QVERIFY(d.windowTitle().contains("3 of 3 holes ready"));
+    QVERIFY(Find<QPushButton>(d, "apply")->isEnabled());
+
+    // Click the third variation of hole 1; skip hole 2.
+    auto* list = Find<QListWidget>(d, "variations_1");
+    const QRect third = list->visualItemRect(list->item(2));
+    QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, third.center());
+    QCOMPARE(d.Holes()[0].pick, 3);
+    Find<QCheckBox>(d, "skip_2")->click();
+    QCOMPARE(d.Holes()[1].pick, 0);
+
+    // Apply's input deforms a copy of the mesh as chosen: hole 2 keeps its coarse fill.
+    CMeshO applied;
+    curvature_inpaint::CopyMesh(mesh_, applied);
+    const auto result = curvature_inpaint::FillHoles(applied, d.Params(), nullptr, &d.Holes());
+    QCOMPARE(int(result.holes.size()), 3);
+    QCOMPARE(result.holes[0].pick, 3);
+    QVERIFY(result.holes[1].problem.find("skipped") != std::string::npos);
+    QVERIFY(result.holes[2].problem.empty());
+
+    QTest::mouseClick(Find<QPushButton>(d, "apply"), Qt::LeftButton);
+    QCOMPARE(d.result(), int(QDialog::Accepted));
+  }
+
+  void reroll_replaces_one_hole() {
+    HoleFillDialog d(mesh_);
+    Find<QSpinBox>(d, "variations")->setValue(2);
+    d.Inpaint();
+    QTRY_VERIFY_WITH_TIMEOUT(!d.Busy(), 120000);
+    const QImage before = d.Holes()[0].variations[0], other = d.Holes()[1].variations[0];
+    Find<QPushButton>(d, "reroll_1")->click();
+    QTRY_VERIFY_WITH_TIMEOUT(!d.Busy(), 120000);
+    QVERIFY(d.Holes()[0].variations[0] != before);
+    QVERIFY(d.Holes()[1].variations[0] == other);
+  }
+
+  void cancel_stops_a_network_call_and_then_closes() {
+    // A server that accepts the request and never answers.
+    QTcpServer server;
+    QVERIFY(server.listen(QHostAddress::LocalHost));
+    std::vector<std::unique_ptr<QTcpSocket>> held;
+    connect(&server, &QTcpServer::newConnection, [&] {
+      while (server.hasPendingConnections()) held.emplace_back(server.nextPendingConnection());
+    });
+    HoleFillDialog d(mesh_);
+    d.show();
+    ChooseBackend(d, "comfyui");
+    Find<QLineEdit>(d, "url")->setText(QString("http://127.0.0.1:%1").arg(server.serverPort()));
+    Find<QPushButton>(d, "inpaint")->click();
+    QVERIFY(d.Busy());
+    QTRY_VERIFY_WITH_TIMEOUT(!held.empty(), 60000);
+    Find<QPushButton>(d, "cancel")->click();
+    QTRY_VERIFY_WITH_TIMEOUT(!d.Busy(), 60000);
+    QVERIFY(d.isVisible()); // stopping the work does not close the dialog
+    QVERIFY(d.Holes().empty());
+    QCOMPARE(Find<QLabel>(d, "status")->text(), QString("Stopped."));
+    QVERIFY(!Find<QPushButton>(d, "apply")->isEnabled());
+    Find<QPushButton>(d, "cancel")->click();
+    QVERIFY(!d.isVisible());
+    QCOMPARE(d.result(), int(QDialog::Rejected));
+  }
+};
+
+int main(int argc, char** argv) {
+  // Settings go to a private folder; widgets to Qt's offscreen platform.
+  QTemporaryDir config;
+  qputenv("XDG_CONFIG_HOME", config.path().toUtf8());
+  if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+  QApplication app(argc, argv);
+  DialogTest test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "dialog_test.moc"
