@@ -115,6 +115,19 @@ class Handler(BaseHTTPRequestHandler):
             return self.send(200, b"{" + b" " * OVERSIZED_BYTES + b"}")
         if scenario == "garbage":
             return self.send(200, b"<html>upstream connect error or disconnect/reset</html>", "text/html")
+        if scenario == "drip":
+            return self.drip()
+        if scenario == "endless":
+            return self.endless()
+        if scenario == "redirect":
+            return self.send(302, b"", "text/plain", headers=[("Location", "http://example.invalid/collect")])
+        if scenario == "deep-json":
+            return self.send(200, b"[" * 100000 + b"]" * 100000)
+        if scenario == "bad-base64" and service != "comfyui":
+            junk = "@@not*base64@@"
+            return self.send(200, {"openai": {"created": 1, "data": [{"b64_json": junk}]},
+                                   "sd-webui": {"images": [junk], "parameters": {}, "info": "{}"},
+                                   "stability": {"image": junk, "finish_reason": "SUCCESS", "seed": 1}}[service])
         try:
             handler = getattr(self, "do_" + service.replace("-", "_"))
             handler(method, rest, url, scenario)
@@ -148,7 +161,36 @@ class Handler(BaseHTTPRequestHandler):
             return {"id": "0" * 32, "name": "server_error", "errors": [message]}
         return {"error": {"type": "server_error", "message": message, "details": "", "extra_info": {}}}
 
+    def drip(self):
+        """A valid start, then one byte every 0.3 s: only a total timeout ends it."""
+        self.send_response(200)
+        self.send_header("Content-Type", "application/json")
+        self.send_header("Content-Length", "100000")
+        self.end_headers()
+        try:
+            self.wfile.write(b"{")
+            for _ in range(100):
+                time.sleep(0.3)
+                self.wfile.write(b" ")
+                self.wfile.flush()
+        except (BrokenPipeError, ConnectionResetError):
+            pass
+
+    def endless(self):
+        """A body with no length that never ends (until the client hangs up)."""
+        self.send_response(200)
+        self.send_header("Content-Type", "application/json")
+        self.end_headers()
+        try:
+            self.wfile.write(b"{\"data\": \"")
+            for _ in range(2000):  # 128 MB at most
+                self.wfile.write(b"A" * 65536)
+        except (BrokenPipeError, ConnectionResetError):
+            pass
+
     def result_png(self, scenario, w, h):
+        if scenario == "not-image":
+            return b"<html><body>Service Unavailable</body></html>"
         if scenario == "wrong-size":
             return pngs.encode(w // 2, h // 2)
         if scenario == "bomb":

@@ -142,6 +142,37 @@ class Backends(TempDirTest):
             with self.subTest(backend=backend):
                 self.assert_fails(backend, "bomb", "refused")
 
+    def test_slow_drip_is_cut_by_the_total_timeout(self):
+        for backend in REMOTE:
+            with self.subTest(backend=backend):
+                self.assert_fails(backend, "drip", "no complete answer within 2 s")
+
+    def test_endless_body_is_cut_by_the_size_cap(self):
+        for backend in REMOTE:
+            with self.subTest(backend=backend):
+                self.assert_fails(backend, "endless", "larger than 1 MB")
+
+    def test_redirect_is_not_followed(self):
+        for backend in REMOTE:
+            with self.subTest(backend=backend):
+                last = self.assert_fails(backend, "redirect", "HTTP 302", "redirects are not followed")
+                self.assertNotIn("example.invalid", last)
+
+    def test_deeply_nested_json(self):
+        for backend in REMOTE:
+            with self.subTest(backend=backend):
+                self.assert_fails(backend, "deep-json", "not the JSON")
+
+    def test_invalid_base64(self):
+        for backend in ("openai", "sd-webui", "stability"):
+            with self.subTest(backend=backend):
+                self.assert_fails(backend, "bad-base64", "invalid base64")
+
+    def test_content_that_is_not_an_image(self):
+        for backend in REMOTE:
+            with self.subTest(backend=backend):
+                self.assert_fails(backend, "not-image", "not a valid PNG")
+
     def test_missing_key_is_one_clear_sentence(self):
         env = {k: v for k, v in os.environ.items() if k != "OPENAI_API_KEY"}
         import subprocess

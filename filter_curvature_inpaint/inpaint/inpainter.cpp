@@ -119,6 +119,11 @@ HttpResponse Call(const HttpRequest& req, const InpaintParams& p, const std::str
   } catch (const HttpError& e) {
     throw InpaintError(backend + ": " + Redact(e.what()));
   }
+  // A redirect may lead the request, key included, to another host: never followed.
+  if (r.status >= 300 && r.status < 400)
+    throw InpaintError(backend + ": HTTP " + std::to_string(r.status) +
+                       ": the service redirects elsewhere; redirects are not followed, give its "
+                       "final address");
   if (r.status < 200 || r.status >= 300)
     throw InpaintError(backend + ": HTTP " + std::to_string(r.status) + ": " +
                        Redact(ServiceMessage(r.body)));
