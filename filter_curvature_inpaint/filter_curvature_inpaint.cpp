@@ -129,6 +129,9 @@ void FilterCurvatureInpaintPlugin::initParameterSet(QAction* action, MeshModel&,
     par.addParam(RichInt("MaxHoleSize", 0, "Max size to be closed",
                          "Holes with more boundary edges than this stay open (like MeshLab's "
                          "Close Holes). 0 fills holes of any size."));
+    par.addParam(RichBool("KeepLongestOpen", false, "Leave the outer border open",
+                          "The longest boundary loop is the outer border of an open scan (a "
+                          "terrain, a relief, a face mask), not a hole: leave it open."));
     par.addParam(RichBool("Selected", false, "Close holes with selected faces",
                           "Only the holes with at least one selected face on their border are "
                           "filled."));
@@ -208,6 +211,9 @@ void FilterCurvatureInpaintPlugin::initParameterSet(QAction* action, MeshModel&,
                  "matches the image. paper: the paper's small steps of control vertices."));
     par.addParam(RichInt("MaxHoleSize", 0, "Max size to be closed",
                          "Holes with more boundary edges stay open. 0: every hole."));
+    par.addParam(RichBool("KeepLongestOpen", false, "Leave the outer border open",
+                          "The longest boundary loop is the outer border of an open scan, not "
+                          "a hole: leave it open."));
     par.addParam(RichBool("Selected", false, "Close holes with selected faces",
                           "Only the holes with a selected face on their border are filled."));
     par.addParam(RichInt("ImageSize", 512, "Image size (pixels)",
@@ -279,6 +285,7 @@ bool FilterCurvatureInpaintPlugin::applyCoarseHoleFill(MeshModel& mm, const Rich
                                                        vcg::CallBackPos* cb) {
   vcg_ext::CoarseFillParams params;
   params.max_hole_edges = std::max(0, par.getInt("MaxHoleSize"));
+  params.keep_longest_open = par.getBool("KeepLongestOpen");
   params.selected_only = par.getBool("Selected");
   params.refine = par.getBool("Refine");
   params.fair = par.getBool("Fair");
@@ -341,6 +348,7 @@ bool FilterCurvatureInpaintPlugin::applyHoleFill(MeshModel& mm, const RichParame
   p.pick = std::max(0, par.getInt("Variation"));
   ReadDeformationParams(par, p);
   p.images.coarse.max_hole_edges = std::max(0, par.getInt("MaxHoleSize"));
+  p.images.coarse.keep_longest_open = par.getBool("KeepLongestOpen");
   p.images.coarse.selected_only = par.getBool("Selected");
   p.images.image_size = std::max(16, std::min(4096, par.getInt("ImageSize")));
   p.images_dir = par.getString("OutputFolder").trimmed().toStdString();

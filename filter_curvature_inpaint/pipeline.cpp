@@ -78,9 +78,10 @@ std::vector<std::string> DescribeCoarseFill(const vcg_ext::CoarseFillResult& res
   }
   std::snprintf(buf, sizeof buf,
                 "filled %d of %zu holes with %d vertices and %d faces; left open: %d over the "
-                "size limit, %d away from the selection",
+                "size limit, %d away from the selection%s",
                 result.FilledCount(), result.holes.size(), new_vertices, new_faces,
-                result.skipped_by_size, result.skipped_by_selection);
+                result.skipped_by_size, result.skipped_by_selection,
+                result.kept_as_border ? ", the longest loop as the scan's outer border" : "");
   lines.emplace_back(buf);
   if (result.inconsistent_edges > 0) {
     std::snprintf(buf, sizeof buf,

@@ -5,7 +5,7 @@ import os
 import unittest
 
 from support import (SHARED_MESHES, SOURCE, TOOL, TempDirTest, grid, info, png_size, run, sha256,
-                     write_ascii_ply, write_non_manifold_ply)
+                     write_ascii_ply, write_binary_ply, write_non_manifold_ply)
 
 
 class CoarseFill(TempDirTest):
@@ -45,6 +45,56 @@ class CoarseFill(TempDirTest):
         r = run([TOOL, "coarse", src, out, "--max-hole-edges", str(limit)])
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertEqual(sorted(info(out)["hole_edges"]), sorted(e for e in sizes if e > limit))
+
+    def test_outer_border_of_an_open_scan_stays_open(self):
+        # A grid with a hole in the middle: its outer border is the longest loop.
+        v, f = grid(12)
+        f = [t for k, t in enumerate(f) if k not in (130, 131, 132, 133)]
+        src = self.path("relief.ply")
+        write_ascii_ply(src, v, f)
+        self.assertEqual(len(info(src)["hole_edges"]), 2)
+        out = self.path("relief_filled.ply")
+        r = run([TOOL, "coarse", src, out, "--keep-longest-open"])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("the longest loop as the scan's outer border", r.stderr)
+        self.assertEqual(info(out)["hole_edges"], [48])  # the border, 4 x 12 edges
+
+    def test_holes_wider_than_the_diameter_limit_stay_open(self):
+        src = os.path.join(SHARED_MESHES, "tower_holes.ply")
+        out = self.path("tower.ply")
+        r = run([TOOL, "coarse", src, out, "--max-hole-diameter", "0.05"])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        left = info(out)["hole_edges"]
+        self.assertIn(401, left)  # the widest window
+        self.assertLess(len(left), len(info(src)["hole_edges"]))
+        self.assertRegex(r.stderr, r"left open: %d over the size limit" % len(left))
+
+    def test_very_large_hole_takes_the_ears_in_bounded_time(self):
+        # A 400 x 400 grid, gently curved, with a round hole of over a thousand edges: the log
+        # says which triangulation it took (vcglib's ears; Liepa's DP would be cubic).
+        n, radius = 400, 150
+        v, f = grid(n)
+        v = [(x, y, 0.2 * (x - 0.5) ** 2) for x, y, _ in v]
+        inside = {i * (n + 1) + j for i in range(n + 1) for j in range(n + 1)
+                  if (i - n / 2) ** 2 + (j - n / 2) ** 2 < radius ** 2}
+        f = [t for t in f if not any(k in inside for k in t)]
+        src = self.path("big_hole.ply")
+        write_binary_ply(src, v, f)
+        edges = sorted(info(src)["hole_edges"])
+        self.assertGreater(edges[0], 1000)  # the hole; the longer loop is the border
+        out = self.path("big_hole_filled.ply")
+        r = run([TOOL, "coarse", src, out, "--keep-longest-open"])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertRegex(r.stderr, r"hole 1: %d edges, vcg-ears" % edges[0])
+        self.assertEqual(info(out)["hole_edges"], [edges[1]])
+
+    def test_genus_one_part_with_a_hole(self):
+        src = self.punched("rocker_arm.ply", 100, 0.04)
+        out = self.path("rocker.ply")
+        r = run([TOOL, "coarse", src, out])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(info(out)["holes"], 0)
+        self.assertEqual(info(out)["non_manifold_edges"], 0)
 
     def test_every_format_round_trips(self):
         v, f = grid(12)

@@ -47,6 +47,16 @@ def write_ascii_ply(path, vertices, faces):
             f.write("3 " + " ".join(str(i) for i in t) + "\n")
 
 
+def write_binary_ply(path, vertices, faces):
+    import struct
+    with open(path, "wb") as f:
+        f.write(b"ply\nformat binary_little_endian 1.0\n")
+        f.write(f"element vertex {len(vertices)}\nproperty float x\nproperty float y\nproperty float z\n".encode())
+        f.write(f"element face {len(faces)}\nproperty list uchar int vertex_indices\nend_header\n".encode())
+        f.write(b"".join(struct.pack("<3f", *v) for v in vertices))
+        f.write(b"".join(struct.pack("<B3i", 3, *t) for t in faces))
+
+
 def grid(n):
     """A flat (n+1)^2 grid in z = 0 and its triangles."""
     vertices = [(j / n, i / n, 0.0) for i in range(n + 1) for j in range(n + 1)]

@@ -14,6 +14,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
+#include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/selection.h>
 #include <wrap/callback.h>
 
@@ -25,10 +26,14 @@
 namespace vcg_ext {
 
 struct CoarseFillParams {
-  int max_hole_edges = 0;     ///< holes with more boundary edges stay open; 0 = fill all
-  bool selected_only = false; ///< fill only holes with a selected face on their border
-  int dp_max_edges = 200;     ///< larger loops use vcglib's ears instead of Liepa's O(n^3) DP
-  bool refine = true;         ///< match the surrounding edge density
+  int max_hole_edges = 0; ///< holes with more boundary edges stay open; 0 = fill all
+  /// Holes whose border spans more than this fraction of the mesh's bounding-box diagonal
+  /// stay open; 0 = fill all.
+  double max_hole_diameter = 0;
+  bool keep_longest_open = false; ///< leave the longest loop (an open scan's border) open
+  bool selected_only = false;     ///< fill only holes with a selected face on their border
+  int dp_max_edges = 200;         ///< larger loops use vcglib's ears instead of Liepa's O(n^3) DP
+  bool refine = true;             ///< match the surrounding edge density
   double density_alpha = 1.41421356; ///< Liepa's alpha: larger gives a denser fill
   bool fair = true;                  ///< bi-Laplacian fairing of the inserted vertices
   /// A planar loop whose surroundings meet its plane at a crease (the cut bottom of a statue,
@@ -56,6 +61,7 @@ struct CoarseFillResult {
   std::vector<HoleFillReport> holes; ///< every hole considered, filled or not
   int skipped_by_size = 0;
   int skipped_by_selection = 0;
+  int kept_as_border = 0;        ///< the longest loop, left open by keep_longest_open
   size_t inconsistent_edges = 0; ///< edges whose faces disagree on orientation (left as is)
   UnitBox box;
   int FilledCount() const {
@@ -311,11 +317,17 @@ CoarseFillResult CoarseFill(MeshType& m, const CoarseFillParams& params = {},
   HoleLoopParams lp;
   lp.max_edges = params.max_hole_edges;
   lp.selected_only = params.selected_only;
+  lp.keep_longest_open = params.keep_longest_open;
+  if (params.max_hole_diameter > 0) {
+    vcg::tri::UpdateBounding<MeshType>::Box(m);
+    lp.max_diameter = params.max_hole_diameter * double(m.bbox.Diag());
+  }
   const HoleLoops loops = FindHoleLoops(m, census, lp);
 
   CoarseFillResult result;
   result.skipped_by_size = loops.skipped_by_size;
   result.skipped_by_selection = loops.skipped_by_selection;
+  result.kept_as_border = loops.kept_as_border;
   result.inconsistent_edges = census.inconsistent_edges;
   result.box = ComputeUnitBox(m);
   const std::vector<HoleCollar> collars = detail::BuildCollars(m, loops.holes, result.box);

@@ -7,6 +7,8 @@
 
 #include "edge_census.h"
 
+#include <vcg/space/box3.h>
+
 #include <algorithm>
 #include <unordered_map>
 #include <vector>
@@ -31,12 +33,19 @@ struct HoleLoop {
 struct HoleLoopParams {
   int max_edges = 0;          ///< loops with more boundary edges are left open; 0 = no limit
   bool selected_only = false; ///< only loops with a selected face beside them
+  /// Loops whose border spans more than this (the diagonal of its bounding box, in the mesh's
+  /// units) are left open; 0 = no limit.
+  double max_diameter = 0;
+  /// The longest loop is the outer border of an open scan (a terrain, a relief, a face mask),
+  /// not a hole: leave it open.
+  bool keep_longest_open = false;
 };
 
 struct HoleLoops {
   std::vector<HoleLoop> holes;  ///< the loops to fill
-  int skipped_by_size = 0;      ///< loops over max_edges
+  int skipped_by_size = 0;      ///< loops over max_edges or max_diameter
   int skipped_by_selection = 0; ///< loops with no selected face beside them
+  int kept_as_border = 0;       ///< 1 when keep_longest_open left the longest loop open
 };
 
 /// Splits the boundary half-edges of `census` into simple loops and selects those `params`
@@ -100,8 +109,27 @@ HoleLoops FindHoleLoops(const MeshType& m, const EdgeCensus& census,
     if (!stack.empty()) loops.push_back(stack);
   }
 
+  // The longest loop by length, for keep_longest_open.
+  size_t longest = loops.size();
+  if (params.keep_longest_open) {
+    double best = -1;
+    for (size_t l = 0; l < loops.size(); ++l) {
+      double length = 0;
+      for (const Step& step : loops[l]) {
+        const HalfEdge& h = boundary[step.edge];
+        length += double(vcg::Distance(m.vert[h.from].cP(), m.vert[h.to].cP()));
+      }
+      if (length > best) best = length, longest = l;
+    }
+  }
+
   HoleLoops result;
-  for (const auto& loop : loops) {
+  for (size_t l = 0; l < loops.size(); ++l) {
+    const auto& loop = loops[l];
+    if (l == longest) {
+      ++result.kept_as_border;
+      continue;
+    }
     HoleLoop hole;
     bool selected = false;
     int agreeing = 0;
@@ -124,6 +152,17 @@ HoleLoops FindHoleLoops(const MeshType& m, const EdgeCensus& census,
     if (params.max_edges > 0 && hole.EdgeCount() > params.max_edges) {
       ++result.skipped_by_size;
       continue;
+    }
+    if (params.max_diameter > 0) {
+      vcg::Box3<double> box;
+      for (int v : hole.vertices) {
+        const auto& p = m.vert[v].cP();
+        box.Add(vcg::Point3<double>(p[0], p[1], p[2]));
+      }
+      if (box.Diag() > params.max_diameter) {
+        ++result.skipped_by_size;
+        continue;
+      }
     }
     if (params.selected_only && !selected) {
       ++result.skipped_by_selection;

@@ -30,12 +30,16 @@ const char* const kUsage =
     "      takes the best-scored variation. Backends and their options as for inpaint.\n"
     "      --from-images DIR deforms to hole_<k>_inpainted.png, inpainted by hand in DIR\n"
     "      after `images IN DIR --size PX` (same --max-hole-edges, --context, --size).\n"
-    "  curvature-inpaint coarse IN OUT [--max-hole-edges N] [--selected-only]\n"
-    "                                 [--liepa-max-edges M] [--no-refine] [--no-fair]\n"
+    "  curvature-inpaint coarse IN OUT [--max-hole-edges N] [--max-hole-diameter F]\n"
+    "                   [--keep-longest-open] [--selected-only] [--liepa-max-edges M]\n"
+    "                   [--no-refine] [--no-fair]\n"
     "      Fill every hole of IN (stages 0-2: Liepa triangulation, refinement, fairing) and\n"
-    "      write OUT. Formats: .ply .off .obj .stl. N = 0 (default) fills holes of any size.\n"
-    "      Holes up to M edges (default 200) get the optimal triangulation, larger ones\n"
-    "      vcglib's ear cutting. --selected-only fills holes beside selected faces (PLY).\n"
+    "      write OUT. Formats: .ply .off .obj .stl. N = 0 (default) fills holes of any size;\n"
+    "      F: holes whose border spans more than F x the bounding-box diagonal stay open.\n"
+    "      --keep-longest-open leaves the longest loop open: the outer border of an open\n"
+    "      scan. --selected-only fills holes beside selected faces (PLY). Holes up to M\n"
+    "      edges (default 200) get the optimal triangulation, larger ones vcglib's ears.\n"
+    "      The hole options hold for images and fill too.\n"
     "  curvature-inpaint images IN DIR [--size N] [--max-hole-edges N] [--context C]\n"
     "                                  [--filter-scale S]\n"
     "      Fill the holes of IN, then write for every hole its curvature image\n"
@@ -128,6 +132,15 @@ double ParseNonNegative(const std::string& name, const std::string& v) {
   return ParseNumber(name, v, true);
 }
 
+/// Which holes to fill, the same options for coarse, images and fill.
+void ReadHoleSelection(Args& args, vcg_ext::CoarseFillParams& p) {
+  p.max_hole_edges = int(args.Integer("--max-hole-edges", 0, 0));
+  const std::string diameter = args.Option("--max-hole-diameter", "");
+  if (!diameter.empty()) p.max_hole_diameter = ParsePositive("--max-hole-diameter", diameter);
+  p.keep_longest_open = args.Flag("--keep-longest-open");
+  p.selected_only = args.Flag("--selected-only");
+}
+
 bool ProgressToStderr(const int, const char* message) {
   std::fprintf(stderr, "%s\n", message);
   return true;
@@ -135,8 +148,7 @@ bool ProgressToStderr(const int, const char* message) {
 
 int Coarse(Args& args) {
   vcg_ext::CoarseFillParams params;
-  params.max_hole_edges = int(args.Integer("--max-hole-edges", 0, 0));
-  params.selected_only = args.Flag("--selected-only");
+  ReadHoleSelection(args, params);
   params.dp_max_edges = int(args.Integer("--liepa-max-edges", params.dp_max_edges, 3));
   params.refine = !args.Flag("--no-refine");
   params.fair = !args.Flag("--no-fair");
@@ -153,7 +165,7 @@ int Coarse(Args& args) {
 int Images(Args& args) {
   curvature_inpaint::CurvatureImagesParams params;
   params.image_size = int(args.Integer("--size", params.image_size, 16));
-  params.coarse.max_hole_edges = int(args.Integer("--max-hole-edges", 0, 0));
+  ReadHoleSelection(args, params.coarse);
   const std::string context = args.Option("--context", "");
   if (!context.empty()) params.segmentation.context = ParsePositive("--context", context);
   const std::string scale = args.Option("--filter-scale", "");
@@ -226,7 +238,7 @@ int Fill(Args& args) {
   if (!sim.empty()) p.paper.similitude = ParsePositive("--similitude", sim);
   const std::string tc = args.Option("--transformation-constant", "");
   if (!tc.empty()) p.paper.transformation_constant = ParsePositive("--transformation-constant", tc);
-  p.images.coarse.max_hole_edges = int(args.Integer("--max-hole-edges", 0, 0));
+  ReadHoleSelection(args, p.images.coarse);
   p.images.image_size = int(args.Integer("--size", 512, 16));
   p.images_dir = args.Option("--images", "");
   p.inpainted_dir = args.Option("--from-images", "");

@@ -144,6 +144,9 @@ HoleFillDialog::HoleFillDialog(const CMeshO& mesh, QWidget* parent)
   max_hole_edges_->setSpecialValueText("any size");
   max_hole_edges_->setToolTip("Holes with more boundary edges stay open; 0: fill every hole.");
   form->addRow("Maximum hole size (edges)", max_hole_edges_);
+  keep_longest_open_ = new QCheckBox("leave the longest border open (an open scan's edge)");
+  keep_longest_open_->setObjectName("keepLongestOpen");
+  form->addRow("Outer border", keep_longest_open_);
   selected_only_ = new QCheckBox("only holes beside selected faces");
   selected_only_->setObjectName("selectedOnly");
   form->addRow("Selection", selected_only_);
@@ -217,6 +220,7 @@ HoleFillParams HoleFillDialog::Params() const {
   p.mode = mode_->currentText().toStdString();
   p.images.coarse.max_hole_edges = max_hole_edges_->value();
   p.images.coarse.selected_only = selected_only_->isChecked();
+  p.images.coarse.keep_longest_open = keep_longest_open_->isChecked();
   p.images.image_size = 512;
   return p;
 }
@@ -282,6 +286,7 @@ void HoleFillDialog::LoadSettings() {
   mode_->setCurrentIndex(m < 0 ? 0 : m);
   max_hole_edges_->setValue(s.value("max_hole_edges", 0).toInt());
   selected_only_->setChecked(s.value("selected_only", false).toBool());
+  keep_longest_open_->setChecked(s.value("keep_longest_open", false).toBool());
   BackendChanged();
 }
 
@@ -299,6 +304,7 @@ void HoleFillDialog::SaveSettings() const {
   s.setValue("mode", mode_->currentText());
   s.setValue("max_hole_edges", max_hole_edges_->value());
   s.setValue("selected_only", selected_only_->isChecked());
+  s.setValue("keep_longest_open", keep_longest_open_->isChecked());
 }
 
 void HoleFillDialog::SetBusy(bool busy) {

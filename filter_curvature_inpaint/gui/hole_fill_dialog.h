@@ -87,6 +87,7 @@ private:
   QComboBox* mode_;
   QSpinBox* max_hole_edges_;
   QCheckBox* selected_only_;
+  QCheckBox* keep_longest_open_;
   QPushButton* inpaint_;
   QPushButton* apply_;
   QPushButton* cancel_;
