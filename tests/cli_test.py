@@ -96,6 +96,35 @@ class CoarseFill(TempDirTest):
         self.assertEqual(info(out)["holes"], 0)
         self.assertEqual(info(out)["non_manifold_edges"], 0)
 
+    def test_inconsistent_orientation_is_filled_and_reported(self):
+        v, f = grid(10)
+        f = [(t if k % 2 else (t[0], t[2], t[1])) for k, t in enumerate(f) if k not in (88, 89, 90, 91)]
+        src = self.path("flipped.ply")
+        write_ascii_ply(src, v, f)
+        out = self.path("flipped_filled.ply")
+        r = run([TOOL, "coarse", src, out, "--keep-longest-open"])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("opposite orientation", r.stderr)
+        self.assertEqual(len(info(out)["hole_edges"]), 1)  # only the border
+        self.assertEqual(info(out)["non_manifold_edges"], 0)
+
+    def test_island_inside_a_hole(self):
+        # Two triangles floating inside a hole: the hole and the island's own border are
+        # separate loops, each closed on its own; the result is manifold.
+        v, f = grid(10)
+        cell = lambda k: divmod(k // 2, 10)  # noqa: E731  (row, column) of face k
+        hole = [k for k in range(len(f)) if 2 <= cell(k)[0] <= 7 and 2 <= cell(k)[1] <= 7]
+        island = [k for k in hole if 4 <= cell(k)[0] <= 5 and 4 <= cell(k)[1] <= 5]
+        src = self.path("island.ply")
+        write_ascii_ply(src, v, [t for k, t in enumerate(f) if k not in hole or k in island])
+        self.assertEqual(len(info(src)["hole_edges"]), 3)
+        out = self.path("island_filled.ply")
+        r = run([TOOL, "coarse", src, out, "--keep-longest-open"])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        after = info(out)
+        self.assertEqual(after["hole_edges"], [40])  # the grid's border
+        self.assertEqual(after["non_manifold_edges"], 0)
+
     def test_every_format_round_trips(self):
         v, f = grid(12)
         f = [t for k, t in enumerate(f) if k not in (60, 61, 62, 63)]  # a small hole
@@ -172,6 +201,31 @@ class BadInput(TempDirTest):
         src = self.path("nan.ply")
         write_ascii_ply(src, v, f)
         self.assert_refused(src, ["non-finite"])
+
+    def test_infinite_coordinates(self):
+        v, f = grid(4)
+        v[3] = (math.inf, 0.0, 0.0)
+        src = self.path("inf.ply")
+        write_ascii_ply(src, v, f)
+        self.assert_refused(src, ["non-finite"])
+
+    def test_vertex_index_out_of_range(self):
+        v, f = grid(4)
+        f[5] = (0, 1, 9999)
+        src = self.path("oob.ply")
+        write_ascii_ply(src, v, f)
+        self.assert_refused(src, ["not a readable mesh", "vertex index"])
+
+    def test_unwelded_triangle_soup(self):
+        # Each triangle with its own corners: every edge looks like a hole. Refused, not doubled.
+        v, f = grid(6)
+        soup_v, soup_f = [], []
+        for t in f:
+            soup_f.append((len(soup_v), len(soup_v) + 1, len(soup_v) + 2))
+            soup_v += [v[i] for i in t]
+        src = self.path("soup.ply")
+        write_ascii_ply(src, soup_v, soup_f)
+        self.assert_refused(src, ["not welded", "Merge Close Vertices"])
 
     def test_non_manifold_edge(self):
         src = write_non_manifold_ply(self.path("nonmanifold.ply"))
