@@ -2,6 +2,8 @@
 
 #include "pipeline.h"
 
+#include <vcg_ext/parallel_for.h>
+
 #include <QColor>
 #include <QDir>
 #include <QImage>
@@ -137,18 +139,21 @@ CurvatureImagesResult ComputeCurvatureImages(CMeshO& m, const CurvatureImagesPar
     const double seg_each = std::chrono::duration<double>(Clock::now() - seg_start).count() /
                             std::max<size_t>(filled.size(), 1);
     result.holes.resize(filled.size());
-    for (size_t i = 0; i < filled.size(); ++i) {
-      const auto t0 = Clock::now();
-      HoleImage& hi = result.holes[i];
-      hi.hole = index[i];
-      BuildHoleImage(m, vf, result.coarse.box, regions[i], params, hi);
-      hi.seconds = seg_each + std::chrono::duration<double>(Clock::now() - t0).count();
-      if (cb) {
-        const std::string msg = "Curvature images: hole " + std::to_string(i + 1) + " of " +
-                                std::to_string(filled.size());
-        if (!cb(int(100.0 * (i + 1) / filled.size()), msg.c_str())) throw vcg_ext::CancelledError();
-      }
-    }
+    // The patches are disjoint and only read the mesh: one per thread.
+    vcg_ext::ParallelFor(
+        int(filled.size()), params.coarse.threads,
+        [&](int i) {
+          const auto t0 = Clock::now();
+          HoleImage& hi = result.holes[i];
+          hi.hole = index[i];
+          BuildHoleImage(m, vf, result.coarse.box, regions[i], params, hi);
+          hi.seconds = seg_each + std::chrono::duration<double>(Clock::now() - t0).count();
+        },
+        [&](int, int done) {
+          const std::string msg = "Curvature images: hole " + std::to_string(done) + " of " +
+                                  std::to_string(filled.size());
+          return !cb || cb(int(100.0 * done / filled.size()), msg.c_str());
+        });
   } catch (...) {
     checkpoint.Restore();
     throw;

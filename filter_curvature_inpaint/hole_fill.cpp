@@ -3,6 +3,7 @@
 #include "pipeline.h"
 
 #include <vcg_ext/curvature_colormap.h>
+#include <vcg_ext/parallel_for.h>
 #include <vcg_ext/self_intersections.h>
 
 #include <QColor>
@@ -136,6 +137,133 @@ InpaintParams WithCancel(const HoleFillParams& params, vcg::CallBackPos* cb, con
   return inpaint;
 }
 
+/// The patch's vertices inside the hole's fill: those the deformation may move.
+std::vector<char> FreeVertices(const vcg_ext::PatchMesh& patch) {
+  std::vector<char> free(patch.points.size(), 1);
+  for (size_t f = 0; f < patch.triangles.size(); ++f)
+    if (!patch.is_fill[f])
+      for (int v : patch.triangles[f]) free[v] = 0;
+  return free;
+}
+
+/// The curvature of the deformed patch as an image, normalized like the coarse one.
+QImage FinalCurvatureImage(const HoleImage& hi, const std::vector<Eigen::Vector3d>& points,
+                           const vcg_ext::ApssParams& apss) {
+  const std::vector<Eigen::Vector3d> normals =
+      vcg_ext::detail::VertexNormals(points, hi.patch.triangles);
+  std::vector<int> query(points.size());
+  for (size_t i = 0; i < query.size(); ++i) query[i] = int(i);
+  const auto h = vcg_ext::ApssMeanCurvature(points, normals, query, apss);
+  std::vector<double> value(h.size(), 0.5);
+  for (size_t i = 0; i < h.size(); ++i)
+    if (std::isfinite(h[i])) value[i] = std::max(0.0, std::min(1.0, 0.5 + 0.5 * h[i] / hi.scale));
+  return ToQImage(vcg_ext::RasterizeCurvature(hi.uv.uv, value, hi.patch.triangles, hi.patch.is_fill,
+                                              hi.image.size),
+                  false);
+}
+
+/// One row of the montage: coarse, mask, variations (the pick framed), final.
+QImage MontageRow(const HoleVariations& hv, int pick, const QImage& final_image) {
+  const int cell = 192, pad = 6, cells = int(hv.variations.size()) + 3;
+  QImage row(cells * (cell + pad) + pad, cell + 2 * pad, QImage::Format_RGB32);
+  row.fill(QColor(40, 40, 48));
+  QPainter painter(&row);
+  std::vector<QImage> tiles{hv.image, hv.mask};
+  tiles.insert(tiles.end(), hv.variations.begin(), hv.variations.end());
+  tiles.push_back(final_image);
+  for (int c = 0; c < cells; ++c) {
+    const QRect r(pad + c * (cell + pad), pad, cell, cell);
+    if (c == pick + 1)
+      painter.fillRect(r.adjusted(-pad / 2, -pad / 2, pad / 2, pad / 2), QColor(255, 255, 255));
+    painter.drawImage(r, tiles[c]);
+  }
+  painter.end();
+  return row;
+}
+
+/// Stages 8-9 for hole k: its variations (given, or from the backend), the pick, and the
+/// deformation of its patch (`points`, empty when the hole keeps its coarse fill). Touches
+/// nothing shared, so holes can run in parallel.
+void DeformHole(const HoleImage& hi, size_t k, const vcg_ext::CoarseFillResult& coarse,
+                const HoleFillParams& params, const InpaintParams& inpaint,
+                const std::vector<HoleVariations>* chosen, HoleFillReport& report,
+                HoleVariations& hv, std::vector<Eigen::Vector3d>& points, QImage& final_image) {
+  report.hole = hi.hole;
+  report.boundary_edges = coarse.holes[hi.hole].boundary_edges;
+  report.new_vertices = int(coarse.holes[hi.hole].new_vertices.size());
+  report.coarse_s = coarse.holes[hi.hole].seconds;
+  report.images_s = hi.seconds;
+  if (chosen) {
+    hv = (*chosen)[k];
+    if (hv.problem.empty() && (hv.image.size() != QSize(hi.image.size, hi.image.size) ||
+                               ToQImage(hi.image, false) != hv.image))
+      throw std::runtime_error("the previewed hole " + std::to_string(k + 1) +
+                               " differs from the mesh's: preview again with the same settings");
+    if (!hi.problem.empty()) hv.problem = hi.problem;
+    if (hv.problem.empty() && hv.pick == 0) hv.problem = "skipped; it keeps its coarse fill";
+    if (hv.problem.empty() && (hv.pick < 0 || hv.pick > int(hv.variations.size())))
+      throw std::invalid_argument("hole " + std::to_string(k + 1) + " has no variation " +
+                                  std::to_string(hv.pick));
+  } else {
+    hv = InpaintHole(hi, k, params, inpaint);
+  }
+  report.inpaint_s = hv.inpaint_s;
+  report.scores = hv.scores;
+  report.pick = hv.pick;
+  if (!hv.problem.empty()) {
+    report.problem = hv.problem;
+    return;
+  }
+  const QImage& target_image = hv.variations[report.pick - 1];
+
+  const auto t = Clock::now();
+  const std::vector<char> free = FreeVertices(hi.patch);
+  std::vector<double> target(hi.patch.points.size(), 0.5);
+  for (size_t i = 0; i < target.size(); ++i)
+    if (free[i]) target[i] = SampleValue(target_image, hi.uv.uv[i]);
+  std::vector<Eigen::Vector3d> moved = hi.patch.points;
+  vcg_ext::DeformationResult dr;
+  if (params.mode == "direct") {
+    // The image's curvature comes from APSS fits several rings wide, the solve's from the
+    // cotangent Laplacian: give the solve the coarse patch's own discrete curvature plus the
+    // change the inpainted image asks for, so an unchanged image leaves it unchanged.
+    std::vector<double> h = vcg_ext::DiscreteMeanCurvature(hi.patch.points, hi.patch.triangles);
+    for (size_t i = 0; i < h.size(); ++i) h[i] += 2 * hi.scale * (target[i] - hi.value[i]);
+    dr = vcg_ext::DeformToCurvatureDirect(moved, hi.patch.triangles, free, h, params.direct);
+  } else {
+    dr = vcg_ext::DeformToCurvaturePaper(moved, hi.patch.triangles, free, target, hi.scale,
+                                         params.paper);
+  }
+  // Back off towards the coarse fill while the deformation folds a triangle over or makes the
+  // fill cross the patch (crossings the coarse fill already had do not count).
+  const int crossings_before =
+      vcg_ext::CountSelfIntersections(hi.patch.points, hi.patch.triangles, hi.patch.is_fill);
+  auto broken = [&] {
+    return Folded(hi.patch.points, moved, hi.patch) > 0 ||
+           vcg_ext::CountSelfIntersections(moved, hi.patch.triangles, hi.patch.is_fill) >
+               crossings_before;
+  };
+  for (int backoff = 0; dr.solved && broken(); ++backoff) {
+    if (backoff == 4) {
+      dr.solved = false;
+      break;
+    }
+    for (size_t i = 0; i < moved.size(); ++i)
+      moved[i] = hi.patch.points[i] + 0.5 * (moved[i] - hi.patch.points[i]);
+  }
+  report.deform_s = Since(t);
+  report.iterations = dr.iterations;
+  report.differing = dr.differing;
+  report.max_move = dr.max_move;
+  if (!dr.solved) {
+    report.problem =
+        "the deformation would fold the patch or make it cross itself; it keeps its coarse fill";
+    return;
+  }
+  points = std::move(moved);
+  if (!params.images_dir.empty()) final_image = FinalCurvatureImage(hi, points, params.images.apss);
+}
+
 } // namespace
 
 void InpaintAgain(HoleVariations& hole, const InpaintParams& params) {
@@ -224,141 +352,53 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
                                std::to_string(chosen->size()) + " holes, the mesh has " +
                                std::to_string(images.holes.size()) +
                                ": preview again with the same settings");
+    // Stages 8-9 per hole, on the hole's own patch: in parallel with the embedded backend (or
+    // given images); one at a time with a service, which would rate-limit parallel calls.
+    // The mesh is only written afterwards, on this thread.
+    const bool local =
+        chosen || !params.inpainted_dir.empty() || params.inpaint.backend == "embedded";
+    const int threads = local ? params.images.coarse.threads : 1;
     int progress = 0;
-    const InpaintParams inpaint = WithCancel(params, cb, &progress);
-    std::vector<QImage> montage_rows;
-    for (size_t k = 0; k < images.holes.size(); ++k) {
-      const HoleImage& hi = images.holes[k];
+    const InpaintParams inpaint = WithCancel(params, threads == 1 ? cb : nullptr, &progress);
+    struct HoleWork {
       HoleFillReport report;
-      report.hole = hi.hole;
-      report.boundary_edges = result.coarse.holes[hi.hole].boundary_edges;
-      report.new_vertices = int(result.coarse.holes[hi.hole].new_vertices.size());
-      report.coarse_s = result.coarse.holes[hi.hole].seconds;
-      report.images_s = hi.seconds;
-      progress = int(100.0 * k / images.holes.size());
-      if (!chosen && cb &&
-          !cb(progress, ("Curvature Inpaint: inpainting hole " + std::to_string(k + 1)).c_str()))
-        throw vcg_ext::CancelledError();
       HoleVariations hv;
-      if (chosen) {
-        hv = (*chosen)[k];
-        if (hv.problem.empty() && (hv.image.size() != QSize(hi.image.size, hi.image.size) ||
-                                   ToQImage(hi.image, false) != hv.image))
-          throw std::runtime_error(
-              "the previewed hole " + std::to_string(k + 1) +
-              " differs from the mesh's: preview again with the same settings");
-        if (!hi.problem.empty()) hv.problem = hi.problem;
-        if (hv.problem.empty() && hv.pick == 0) hv.problem = "skipped; it keeps its coarse fill";
-        if (hv.problem.empty() && (hv.pick < 0 || hv.pick > int(hv.variations.size())))
-          throw std::invalid_argument("hole " + std::to_string(k + 1) + " has no variation " +
-                                      std::to_string(hv.pick));
-      } else {
-        hv = InpaintHole(hi, k, params, inpaint);
-      }
-      report.inpaint_s = hv.inpaint_s;
-      report.scores = hv.scores;
-      report.pick = hv.pick;
-      if (!hv.problem.empty()) {
-        report.problem = hv.problem;
-        result.holes.push_back(report);
-        continue;
-      }
-      const QImage &image = hv.image, &mask = hv.mask;
-      const std::vector<QImage>& variations = hv.variations;
-      const QImage& target_image = variations[report.pick - 1];
-
-      const auto t = Clock::now();
-      std::vector<char> free(hi.patch.points.size(), 1);
-      for (size_t f = 0; f < hi.patch.triangles.size(); ++f)
-        if (!hi.patch.is_fill[f])
-          for (int v : hi.patch.triangles[f]) free[v] = 0;
-      std::vector<double> target(hi.patch.points.size(), 0.5);
-      for (size_t i = 0; i < target.size(); ++i)
-        if (free[i]) target[i] = SampleValue(target_image, hi.uv.uv[i]);
-      std::vector<Eigen::Vector3d> points = hi.patch.points;
-      vcg_ext::DeformationResult dr;
-      if (params.mode == "direct") {
-        // The image's curvature comes from APSS fits several rings wide, the solve's from the
-        // cotangent Laplacian: give the solve the coarse patch's own discrete curvature plus
-        // the change the inpainted image asks for, so an unchanged image leaves it unchanged.
-        std::vector<double> h = vcg_ext::DiscreteMeanCurvature(hi.patch.points, hi.patch.triangles);
-        for (size_t i = 0; i < h.size(); ++i) h[i] += 2 * hi.scale * (target[i] - hi.value[i]);
-        dr = vcg_ext::DeformToCurvatureDirect(points, hi.patch.triangles, free, h, params.direct);
-      } else {
-        dr = vcg_ext::DeformToCurvaturePaper(points, hi.patch.triangles, free, target, hi.scale,
-                                             params.paper);
-      }
-      // Back off towards the coarse fill while the deformation folds a triangle over or makes
-      // the fill cross the patch (crossings the coarse fill already had do not count).
-      const int crossings_before =
-          vcg_ext::CountSelfIntersections(hi.patch.points, hi.patch.triangles, hi.patch.is_fill);
-      auto broken = [&] {
-        return Folded(hi.patch.points, points, hi.patch) > 0 ||
-               vcg_ext::CountSelfIntersections(points, hi.patch.triangles, hi.patch.is_fill) >
-                   crossings_before;
-      };
-      for (int backoff = 0; dr.solved && broken(); ++backoff) {
-        if (backoff == 4) {
-          dr.solved = false;
-          break;
-        }
-        for (size_t i = 0; i < points.size(); ++i)
-          points[i] = hi.patch.points[i] + 0.5 * (points[i] - hi.patch.points[i]);
-      }
-      report.deform_s = Since(t);
-      report.iterations = dr.iterations;
-      report.differing = dr.differing;
-      report.max_move = dr.max_move;
-      if (!dr.solved) {
-        report.problem = "the deformation would fold the patch or make it cross itself; it keeps "
-                         "its coarse fill";
-        result.holes.push_back(report);
-        continue;
-      }
-      for (size_t i = 0; i < points.size(); ++i)
+      std::vector<Eigen::Vector3d> points; ///< the deformed patch; empty: keep the coarse fill
+      QImage final_image;
+    };
+    std::vector<HoleWork> work(images.holes.size());
+    const int count = int(images.holes.size());
+    vcg_ext::ParallelFor(
+        count, threads,
+        [&](int k) {
+          HoleWork& w = work[k];
+          DeformHole(images.holes[k], size_t(k), result.coarse, params, inpaint, chosen, w.report,
+                     w.hv, w.points, w.final_image);
+        },
+        [&](int, int done) {
+          progress = int(100.0 * done / std::max(count, 1));
+          const std::string msg = "Curvature Inpaint: inpainted and deformed hole " +
+                                  std::to_string(done) + " of " + std::to_string(count);
+          return !cb || cb(progress, msg.c_str());
+        });
+    std::vector<QImage> montage_rows;
+    for (size_t k = 0; k < work.size(); ++k) {
+      const HoleImage& hi = images.holes[k];
+      HoleWork& w = work[k];
+      result.holes.push_back(w.report);
+      if (w.points.empty()) continue;
+      const std::vector<char> free = FreeVertices(hi.patch);
+      for (size_t i = 0; i < w.points.size(); ++i)
         if (free[i])
-          m.vert[hi.patch.vertices[i]].P() = result.coarse.box.FromUnit<Scalarm>(points[i]);
-
-      if (!params.images_dir.empty()) {
-        const std::string base = params.images_dir + "/hole_" + std::to_string(k + 1);
-        SavePng(image, base + "_coarse.png");
-        SavePng(mask, base + "_mask.png");
-        for (size_t j = 0; j < variations.size(); ++j)
-          SavePng(variations[j], base + "_variation_" + std::to_string(j + 1) + ".png");
-        // The final curvature, normalized like the coarse image.
-        std::vector<Eigen::Vector3d> normals =
-            vcg_ext::detail::VertexNormals(points, hi.patch.triangles);
-        std::vector<int> query(points.size());
-        for (size_t i = 0; i < query.size(); ++i) query[i] = int(i);
-        const auto h = vcg_ext::ApssMeanCurvature(points, normals, query, params.images.apss);
-        std::vector<double> value(h.size(), 0.5);
-        for (size_t i = 0; i < h.size(); ++i)
-          if (std::isfinite(h[i]))
-            value[i] = std::max(0.0, std::min(1.0, 0.5 + 0.5 * h[i] / hi.scale));
-        const QImage final_image =
-            ToQImage(vcg_ext::RasterizeCurvature(hi.uv.uv, value, hi.patch.triangles,
-                                                 hi.patch.is_fill, hi.image.size),
-                     false);
-        SavePng(final_image, base + "_final.png");
-        // Montage row: coarse, mask, variations (the pick framed), final.
-        const int cell = 192, pad = 6, cells = int(variations.size()) + 3;
-        QImage row(cells * (cell + pad) + pad, cell + 2 * pad, QImage::Format_RGB32);
-        row.fill(QColor(40, 40, 48));
-        QPainter painter(&row);
-        std::vector<QImage> tiles{image, mask};
-        tiles.insert(tiles.end(), variations.begin(), variations.end());
-        tiles.push_back(final_image);
-        for (int c = 0; c < cells; ++c) {
-          const QRect r(pad + c * (cell + pad), pad, cell, cell);
-          if (c == report.pick + 1)
-            painter.fillRect(r.adjusted(-pad / 2, -pad / 2, pad / 2, pad / 2),
-                             QColor(255, 255, 255));
-          painter.drawImage(r, tiles[c]);
-        }
-        painter.end();
-        montage_rows.push_back(row);
-      }
-      result.holes.push_back(report);
+          m.vert[hi.patch.vertices[i]].P() = result.coarse.box.FromUnit<Scalarm>(w.points[i]);
+      if (params.images_dir.empty()) continue;
+      const std::string base = params.images_dir + "/hole_" + std::to_string(k + 1);
+      SavePng(w.hv.image, base + "_coarse.png");
+      SavePng(w.hv.mask, base + "_mask.png");
+      for (size_t j = 0; j < w.hv.variations.size(); ++j)
+        SavePng(w.hv.variations[j], base + "_variation_" + std::to_string(j + 1) + ".png");
+      SavePng(w.final_image, base + "_final.png");
+      montage_rows.push_back(MontageRow(w.hv, w.report.pick, w.final_image));
     }
     if (!montage_rows.empty()) {
       int w = 0, h = 0;

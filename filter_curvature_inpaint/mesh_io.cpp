@@ -6,8 +6,12 @@
 #include <wrap/io_trimesh/export.h>
 #include <wrap/io_trimesh/import.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
+#include <map>
+#include <sstream>
 #include <unistd.h>
 
 namespace curvature_inpaint {
@@ -27,6 +31,103 @@ bool Supported(const std::string& ext) {
   return ext == "ply" || ext == "off" || ext == "obj" || ext == "stl";
 }
 
+/// Checks a PLY header before vcglib's reader sees it: that reader dereferences missing
+/// tokens (an "element" line without a count crashes it) and allocates whatever count a
+/// header declares. Returns why the header is refused, or "" when it is sound.
+std::string PlyHeaderProblem(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(0, std::ios::end);
+  const long long file_size = in.tellg();
+  in.seekg(0);
+  static const std::map<std::string, int> kSizes{
+      {"char", 1},  {"uchar", 1},   {"int8", 1},   {"uint8", 1},  {"short", 2}, {"ushort", 2},
+      {"int16", 2}, {"uint16", 2},  {"int", 4},    {"uint", 4},   {"int32", 4}, {"uint32", 4},
+      {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
+  std::string line;
+  long long header_bytes = 0, min_body = 0, element_min = 0, element_count = 0;
+  bool binary = false, format = false;
+  int lines = 0;
+  auto close_element = [&] { min_body += element_count * std::max<long long>(element_min, 1); };
+  while (std::getline(in, line)) {
+    header_bytes += (long long)line.size() + 1;
+    if (++lines > 10000 || header_bytes > (1 << 20)) return "a PLY header of over 1 MB";
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    std::istringstream words(line);
+    std::string word;
+    words >> word;
+    if (lines == 1) {
+      if (word != "ply") return "not a PLY file";
+      continue;
+    }
+    if (word == "format") {
+      std::string kind;
+      words >> kind;
+      if (kind != "ascii" && kind != "binary_little_endian" && kind != "binary_big_endian")
+        return "an unknown PLY format \"" + kind + "\"";
+      binary = kind != "ascii";
+      format = true;
+    } else if (word == "element") {
+      std::string name, count;
+      words >> name >> count;
+      if (name.empty() || count.empty() ||
+          count.find_first_not_of("0123456789") != std::string::npos || count.size() > 12)
+        return "a PLY element without a valid count: \"" + line.substr(0, 80) + "\"";
+      close_element();
+      element_count = std::stoll(count);
+      element_min = 0;
+    } else if (word == "property") {
+      std::string type, a, b;
+      words >> type >> a >> b;
+      if (type == "list") {
+        if (!kSizes.count(a) || !kSizes.count(b) || !(words >> word))
+          return "a malformed PLY list property: \"" + line.substr(0, 80) + "\"";
+        element_min += binary ? kSizes.at(a) : 2;
+      } else {
+        if (!kSizes.count(type) || a.empty())
+          return "a malformed PLY property: \"" + line.substr(0, 80) + "\"";
+        element_min += binary ? kSizes.at(type) : 2;
+      }
+    } else if (word == "end_header") {
+      close_element();
+      if (!format) return "a PLY header without a format line";
+      if (min_body > file_size - header_bytes)
+        return "a PLY header that declares more data than the file holds";
+      return "";
+    }
+  }
+  return "a PLY header without end_header";
+}
+
+/// Checks an OBJ file's face indices before vcglib's reader sees it: that reader reads the
+/// vertices a face names before it checks them. Returns why the file is refused, or "".
+std::string ObjIndexProblem(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  long long vertices = 0, line_number = 0;
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (line.size() > 1 && line[0] == 'v' && (line[1] == ' ' || line[1] == '\t')) {
+      ++vertices;
+    } else if (line.size() > 1 && line[0] == 'f' && (line[1] == ' ' || line[1] == '\t')) {
+      std::istringstream words(line.substr(2));
+      std::string token;
+      int corners = 0;
+      while (words >> token) {
+        ++corners;
+        const std::string index = token.substr(0, token.find('/'));
+        char* end = nullptr;
+        const long long i = std::strtoll(index.c_str(), &end, 10);
+        if (index.empty() || *end != '\0' || i == 0 || i > vertices || i < -vertices)
+          return "face on line " + std::to_string(line_number) + " names vertex \"" +
+                 index.substr(0, 20) + "\" of " + std::to_string(vertices);
+      }
+      if (corners < 3)
+        return "face on line " + std::to_string(line_number) + " has fewer than three corners";
+    }
+  }
+  return "";
+}
+
 } // namespace
 
 int LoadMesh(const std::string& path, CMeshO& m) {
@@ -36,6 +137,10 @@ int LoadMesh(const std::string& path, CMeshO& m) {
   if (!Supported(ext))
     throw MeshIoError(path + ": unsupported format \"" + ext + "\" (use .ply, .off, .obj or .stl)");
   if (!std::ifstream(path).good()) throw MeshIoError(path + ": cannot open the file");
+  const std::string problem = ext == "ply"   ? PlyHeaderProblem(path)
+                              : ext == "obj" ? ObjIndexProblem(path)
+                                             : "";
+  if (!problem.empty()) throw MeshIoError(path + ": not a readable mesh (" + problem + ")");
   int mask = 0;
   Importer::LoadMask(path.c_str(), mask);
   m.Clear();

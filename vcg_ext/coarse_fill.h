@@ -10,6 +10,7 @@
 #include "hole_refinement.h"
 #include "hole_triangulation.h"
 #include "mesh_checks.h"
+#include "parallel_for.h"
 #include "unit_box.h"
 
 #include <Eigen/Eigenvalues>
@@ -41,6 +42,7 @@ struct CoarseFillParams {
   /// continue the walls around it.
   bool flat_planar_caps = true;
   bool select_new_faces = true; ///< replace the face selection with the new faces
+  int threads = 0;              ///< holes filled at once; 0: one per core
 };
 
 struct HoleFillReport {
@@ -335,8 +337,10 @@ CoarseFillResult CoarseFill(MeshType& m, const CoarseFillParams& params = {},
   const int count = int(loops.holes.size());
   result.holes.resize(count);
   std::vector<HolePatch> patches(count);
-  std::set<std::pair<int, int>> chords; // mesh-index chords added by the fills so far
-  for (int h = 0; h < count; ++h) {
+  // Each hole is filled on its own detached patch, so the holes are independent: fill them
+  // on params.threads threads. The callback is called from this thread only (MeshLab's
+  // updates its GUI).
+  auto fill = [&](int h) {
     const auto start = std::chrono::steady_clock::now();
     const HoleLoop& loop = loops.holes[h];
     HoleFillReport& report = result.holes[h];
@@ -347,31 +351,37 @@ CoarseFillResult CoarseFill(MeshType& m, const CoarseFillParams& params = {},
     for (int i = 0; i < loop.EdgeCount(); ++i)
       points[i] = result.box.ToUnit(m.vert[loop.vertices[i]].cP());
     patches[h] = detail::FillOneHole(points, collars[h], params, report);
-    // Two loops meeting at pinch vertices could both add the same chord between them.
-    if (report.filled && loop.pinched) {
-      std::vector<std::pair<int, int>> mine;
-      for (const auto& t : patches[h].triangles)
-        for (int k = 0; k < 3; ++k) {
-          const int a = t[k], b = t[(k + 1) % 3];
-          if (a < loop.EdgeCount() && b < loop.EdgeCount() && !patches[h].IsBoundaryEdge(a, b))
-            mine.push_back(std::minmax(loop.vertices[a], loop.vertices[b]));
-        }
-      bool clash = false;
-      for (const auto& c : mine) clash = clash || chords.count(c) > 0;
-      if (clash) {
-        report.filled = false;
-        report.problem = "its fill would share an edge with the fill of a neighbouring hole";
-      } else {
-        chords.insert(mine.begin(), mine.end());
-      }
-    }
     report.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (cb) {
-      const std::string msg = "Coarse fill: hole " + std::to_string(h + 1) + " of " +
-                              std::to_string(count) + " (" + std::to_string(loop.EdgeCount()) +
-                              " edges)";
-      if (!cb(int(100.0 * (h + 1) / std::max(count, 1)), msg.c_str())) throw CancelledError();
+  };
+  ParallelFor(count, params.threads, fill, [&](int h, int done) {
+    if (!cb) return true;
+    const std::string msg = "Coarse fill: hole " + std::to_string(done) + " of " +
+                            std::to_string(count) + " (" +
+                            std::to_string(loops.holes[h].EdgeCount()) + " edges)";
+    return cb(int(100.0 * done / std::max(count, 1)), msg.c_str());
+  });
+  // Two loops meeting at pinch vertices could both add the same chord between them: the
+  // first in loop order keeps it.
+  std::set<std::pair<int, int>> chords;
+  for (int h = 0; h < count; ++h) {
+    const HoleLoop& loop = loops.holes[h];
+    HoleFillReport& report = result.holes[h];
+    if (!report.filled || !loop.pinched) continue;
+    std::vector<std::pair<int, int>> mine;
+    for (const auto& t : patches[h].triangles)
+      for (int k = 0; k < 3; ++k) {
+        const int a = t[k], b = t[(k + 1) % 3];
+        if (a < loop.EdgeCount() && b < loop.EdgeCount() && !patches[h].IsBoundaryEdge(a, b))
+          mine.push_back(std::minmax(loop.vertices[a], loop.vertices[b]));
+      }
+    bool clash = false;
+    for (const auto& c : mine) clash = clash || chords.count(c) > 0;
+    if (clash) {
+      report.filled = false;
+      report.problem = "its fill would share an edge with the fill of a neighbouring hole";
+    } else {
+      chords.insert(mine.begin(), mine.end());
     }
   }
   detail::ApplyPatches(m, loops.holes, patches, result.box, params, result.holes);

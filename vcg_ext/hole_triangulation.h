@@ -16,6 +16,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <mutex>
 #include <vector>
 
 namespace vcg_ext {
@@ -182,7 +183,13 @@ inline HoleTriangulation VcgEarTriangulation(const std::vector<Eigen::Vector3d>&
   using Hole = vcg::tri::Hole<EarMesh>;
   typename Hole::PosType start(&m.face[0], 0, m.face[0].V(0));
   std::vector<EarFace**> update{&start.f};
-  Hole::FillHoleEar<vcg::tri::MinimumWeightEar<EarMesh>>(m, start, update);
+  {
+    // vcglib's Hole keeps static state (a flag bit, an adjacency ring): one at a time when
+    // holes are filled in parallel.
+    static std::mutex vcg_hole_state;
+    std::lock_guard<std::mutex> lock(vcg_hole_state);
+    Hole::FillHoleEar<vcg::tri::MinimumWeightEar<EarMesh>>(m, start, update);
+  }
 
   for (size_t f = 2 * size_t(n); f < m.face.size(); ++f) {
     if (m.face[f].IsD()) continue;

@@ -31,7 +31,8 @@ const char* const kUsage =
     "      --from-images DIR deforms to hole_<k>_inpainted.png, inpainted by hand in DIR\n"
     "      after `images IN DIR --size PX` (same --max-hole-edges, --context, --size).\n"
     "  curvature-inpaint coarse IN OUT [--max-hole-edges N] [--max-hole-diameter F]\n"
-    "                   [--keep-longest-open] [--selected-only] [--liepa-max-edges M]\n"
+    "                   [--keep-longest-open] [--selected-only] [--liepa-max-edges M] [--threads "
+    "T]\n"
     "                   [--no-refine] [--no-fair]\n"
     "      Fill every hole of IN (stages 0-2: Liepa triangulation, refinement, fairing) and\n"
     "      write OUT. Formats: .ply .off .obj .stl. N = 0 (default) fills holes of any size;\n"
@@ -39,7 +40,8 @@ const char* const kUsage =
     "      --keep-longest-open leaves the longest loop open: the outer border of an open\n"
     "      scan. --selected-only fills holes beside selected faces (PLY). Holes up to M\n"
     "      edges (default 200) get the optimal triangulation, larger ones vcglib's ears.\n"
-    "      The hole options hold for images and fill too.\n"
+    "      --threads T: holes filled at once (default: one per core). The hole options hold\n"
+    "      for images and fill too.\n"
     "  curvature-inpaint images IN DIR [--size N] [--max-hole-edges N] [--context C]\n"
     "                                  [--filter-scale S]\n"
     "      Fill the holes of IN, then write for every hole its curvature image\n"
@@ -132,8 +134,9 @@ double ParseNonNegative(const std::string& name, const std::string& v) {
   return ParseNumber(name, v, true);
 }
 
-/// Which holes to fill, the same options for coarse, images and fill.
+/// Which holes to fill and on how many threads: the same options for coarse, images and fill.
 void ReadHoleSelection(Args& args, vcg_ext::CoarseFillParams& p) {
+  p.threads = int(args.Integer("--threads", 0, 0));
   p.max_hole_edges = int(args.Integer("--max-hole-edges", 0, 0));
   const std::string diameter = args.Option("--max-hole-diameter", "");
   if (!diameter.empty()) p.max_hole_diameter = ParsePositive("--max-hole-diameter", diameter);

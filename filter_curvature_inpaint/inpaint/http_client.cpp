@@ -144,7 +144,7 @@ double RetryWait(const HttpResponse& r, double fallback, double max_wait) {
 HttpResponse SendWithRetries(const HttpRequest& request, const HttpOptions& options) {
   double backoff = options.backoff_s;
   for (int attempt = 0;; ++attempt) {
-    HttpResponse r = SendOnce(request, options);
+    HttpResponse r = options.transport ? options.transport(request) : SendOnce(request, options);
     if (!Retryable(r.status) || attempt >= options.max_retries) return r;
     const double wait = RetryWait(r, backoff, options.max_wait_s);
     backoff *= 2;

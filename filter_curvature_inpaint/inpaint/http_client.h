@@ -42,6 +42,9 @@ struct HttpOptions {
   double backoff_s = 1.0;          ///< first wait without retry-after; doubles each retry
   double max_wait_s = 60;          ///< longest wait honoured from retry-after
   std::function<bool()> cancelled; ///< polled during transfers and waits
+  /// Replaces the network for one attempt (the fuzz targets feed the backends' response
+  /// handling through it); empty: libcurl.
+  std::function<HttpResponse(const HttpRequest&)> transport;
 };
 
 /// A transfer that did not produce an HTTP response (connection, timeout, cancel, size cap).

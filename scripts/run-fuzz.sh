@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets with clang, AddressSanitizer and UndefinedBehaviorSanitizer
+# into build-fuzz/ and runs each for SECONDS (default 20), starting from the seeds in
+# fuzz/corpus/<target>/. New inputs go to build-fuzz/corpus/; a crash leaves its input in
+# build-fuzz/ and fails the script.
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+seconds=${1:-20}
+bash "$root/scripts/setup-debian.sh"
+if ! dpkg-query -W -f='${Status}\n' clang 2>/dev/null | grep -q '^install ok installed$'; then
+  if [ "$(id -u)" -eq 0 ]; then sudo=(); else sudo=(sudo); fi
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends clang >/dev/null
+fi
+flags="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g"
+cmake -S "$root" -B "$root/build-fuzz" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+  -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
+  -DCURVATURE_INPAINT_FUZZ=ON -DBUILD_TESTING=OFF >/dev/null
+cmake --build "$root/build-fuzz" -j2 --target fuzz_backend_responses fuzz_coarse_fill fuzz_mesh_file
+export ASAN_OPTIONS=detect_leaks=0:allocator_may_return_null=1
+export UBSAN_OPTIONS=print_stacktrace=1
+cd "$root/build-fuzz"
+for target in fuzz_backend_responses fuzz_coarse_fill fuzz_mesh_file; do
+  mkdir -p "corpus/$target"
+  echo "fuzz: $target for ${seconds} s" >&2
+  "./bin/$target" -max_total_time="$seconds" -max_len=65536 -timeout=20 -rss_limit_mb=4096 \
+    -print_final_stats=1 "corpus/$target" "$root/fuzz/corpus/$target" 2>"$target.log" ||
+    { tail -60 "$target.log" >&2; echo "fuzz: $target failed; see build-fuzz/$target.log" >&2; exit 1; }
+  grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$target.log" | sed "s/^/$target: /" >&2
+done

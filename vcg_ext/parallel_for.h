@@ -1,0 +1,50 @@
+// Independent tasks on a few threads, with progress and cancel from the calling thread
+// (MeshLab's callback updates its GUI, so only that thread may call it).
+#pragma once
+
+#include "mesh_errors.h"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace vcg_ext {
+
+/// Runs work(i) for i in [0, count) on `threads` threads (0: one per core), this thread
+/// included. After each task this thread runs, done(i, finished so far) is called on it;
+/// returning false stops the others picking new tasks and throws CancelledError. An exception
+/// from a task is rethrown here after every thread has stopped.
+template <class Work, class Done>
+void ParallelFor(int count, int threads, Work work, Done done) {
+  if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  threads = std::max(1, std::min(threads, count));
+  std::atomic<int> next{0}, finished{0};
+  std::atomic<bool> stop{false};
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  auto run = [&](bool report) {
+    for (int i; !stop && (i = next++) < count;) {
+      try {
+        work(i);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(error_mutex);
+        if (!error) error = std::current_exception();
+        stop = true;
+        return;
+      }
+      const int n = ++finished;
+      if (report && !done(i, n)) stop = true;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(run, false);
+  run(true);
+  for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+  if (stop) throw CancelledError();
+}
+
+} // namespace vcg_ext
