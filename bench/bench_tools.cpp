@@ -5,6 +5,7 @@
 #include "mesh_io.h"
 #include "pipeline.h"
 
+#include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/algorithms/closest.h>
 #include <vcg/complex/append.h>
 #include <wrap/io_trimesh/io_mask.h>
@@ -245,6 +246,43 @@ int Ideal(const std::string& gt_path, const std::string& input_path, const std::
 }
 
 // A and B in one file, B moved beside A: a larger mesh around exactly the same holes of A.
+// Punches `count` holes into a closed mesh: every face with a vertex within a random radius
+// (min_r..max_r times the mean edge length) of a random vertex is removed, the balls kept
+// apart by their radii so holes never merge; unreferenced vertices are dropped.
+int PunchMany(const std::string& in, const std::string& out, int count, double min_r,
+              double max_r) {
+  CMeshO m;
+  const int mask = curvature_inpaint::LoadMesh(in, m);
+  double edge = 0;
+  for (const auto& f : m.face) edge += vcg::Distance(f.cP(0), f.cP(1));
+  edge /= std::max<size_t>(m.face.size(), 1);
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<size_t> pick(0, m.vert.size() - 1);
+  std::uniform_real_distribution<double> radius(min_r * edge, max_r * edge);
+  std::vector<std::pair<Point3m, double>> balls;
+  for (int tries = 0; int(balls.size()) < count && tries < 100 * count; ++tries) {
+    const Point3m c = m.vert[pick(rng)].cP();
+    const double r = radius(rng);
+    bool apart = true;
+    for (const auto& b : balls) apart = apart && vcg::Distance(c, b.first) > 2.5 * (r + b.second);
+    if (apart) balls.emplace_back(c, r);
+  }
+  for (auto& f : m.face)
+    for (const auto& b : balls) {
+      bool inside = false;
+      for (int k = 0; k < 3 && !inside; ++k) inside = vcg::Distance(f.cP(k), b.first) < b.second;
+      if (inside) {
+        vcg::tri::Allocator<CMeshO>::DeleteFace(m, f);
+        break;
+      }
+    }
+  vcg::tri::Clean<CMeshO>::RemoveUnreferencedVertex(m);
+  vcg::tri::Allocator<CMeshO>::CompactEveryVector(m);
+  curvature_inpaint::SaveMesh(out, m, mask);
+  std::printf("{\"holes\": %zu, \"faces\": %d}\n", balls.size(), m.fn);
+  return 0;
+}
+
 int Append(const std::string& a_path, const std::string& b_path, const std::string& out) {
   CMeshO a, b;
   curvature_inpaint::LoadMesh(a_path, a);
@@ -322,6 +360,8 @@ int main(int argc, char** argv) {
     if (cmd == "metrics" && argc == 5) return Metrics(argv[2], argv[3], argv[4]);
     if (cmd == "subdivide" && argc == 4) return Subdivide(argv[2], argv[3]);
     if (cmd == "append" && argc == 5) return Append(argv[2], argv[3], argv[4]);
+    if (cmd == "punch-many" && argc == 7)
+      return PunchMany(argv[2], argv[3], std::stoi(argv[4]), std::stod(argv[5]), std::stod(argv[6]));
     if (cmd == "ideal" && argc == 6) return Ideal(argv[2], argv[3], argv[4], std::stoi(argv[5]));
     if (cmd == "render" && (argc == 8 || argc == 11))
       return Render(
@@ -330,7 +370,7 @@ int main(int argc, char** argv) {
           argc == 11 ? Point3m(std::stof(argv[8]), std::stof(argv[9]), std::stof(argv[10]))
                      : Point3m(0, 0, 0));
     std::fprintf(stderr, "usage: bench_tools metrics GT INPUT RESULT | subdivide IN OUT | "
-                         "append A B OUT | ideal GT INPUT DIR SIZE | render MESH OUT.png CX CY CZ "
+                         "append A B OUT | punch-many IN OUT COUNT MIN_R MAX_R | ideal GT INPUT DIR SIZE | render MESH OUT.png CX CY CZ "
                          "RADIUS [VX VY VZ]\n");
     return 2;
   } catch (const std::exception& e) {

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <iterator>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -128,6 +130,46 @@ std::string ObjIndexProblem(const std::string& path) {
   return "";
 }
 
+/// Reads an STL file, binary or ASCII, into `m` (a triangle soup, welded by the caller).
+/// vcglib's ASCII reader loops forever on a file without a line break, so the product reads
+/// STL itself. Throws MeshIoError.
+void ReadStl(const std::string& path, CMeshO& m) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::vector<Point3m> corners;
+  uint32_t count = 0;
+  if (data.size() >= 84) std::memcpy(&count, data.data() + 80, 4);
+  if (data.size() >= 84 && data.size() == 84 + 50ull * count) {
+    for (uint32_t t = 0; t < count; ++t)
+      for (int k = 0; k < 3; ++k) {
+        float v[3];
+        std::memcpy(v, data.data() + 84 + 50ull * t + 12 + 12 * k, 12);
+        corners.emplace_back(v[0], v[1], v[2]);
+      }
+  } else {
+    if (data.compare(0, 5, "solid") != 0)
+      throw MeshIoError(path + ": not a readable mesh (neither binary nor ASCII STL)");
+    std::istringstream words(data);
+    std::string word;
+    while (words >> word) {
+      if (word != "vertex") continue;
+      float v[3];
+      if (!(words >> v[0] >> v[1] >> v[2]))
+        throw MeshIoError(path + ": not a readable mesh (a vertex without three coordinates)");
+      corners.emplace_back(v[0], v[1], v[2]);
+    }
+    if (corners.size() % 3 != 0)
+      throw MeshIoError(path + ": not a readable mesh (vertices not in threes)");
+  }
+  m.Clear();
+  if (corners.empty()) return;
+  auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, corners.size());
+  auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, corners.size() / 3);
+  for (size_t c = 0; c < corners.size(); ++c, ++vi) vi->P() = corners[c];
+  for (size_t t = 0; t < corners.size() / 3; ++t, ++fi)
+    for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[3 * t + k];
+}
+
 } // namespace
 
 int LoadMesh(const std::string& path, CMeshO& m) {
@@ -141,6 +183,16 @@ int LoadMesh(const std::string& path, CMeshO& m) {
                               : ext == "obj" ? ObjIndexProblem(path)
                                              : "";
   if (!problem.empty()) throw MeshIoError(path + ": not a readable mesh (" + problem + ")");
+  if (ext == "stl") {
+    ReadStl(path, m);
+    // STL stores each triangle with its own corners: weld them, as MeshLab does on import,
+    // or every triangle would be a hole of its own.
+    vcg::tri::Clean<CMeshO>::RemoveDuplicateVertex(m);
+    vcg::tri::Allocator<CMeshO>::CompactEveryVector(m);
+    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
+    vcg::tri::UpdateBounding<CMeshO>::Box(m);
+    return vcg::tri::io::Mask::IOM_VERTCOORD | vcg::tri::io::Mask::IOM_FACEINDEX;
+  }
   int mask = 0;
   Importer::LoadMask(path.c_str(), mask);
   m.Clear();
@@ -156,12 +208,6 @@ int LoadMesh(const std::string& path, CMeshO& m) {
     const std::string why = Importer::ErrorMsg(err);
     m.Clear();
     throw MeshIoError(path + ": not a readable mesh (" + why + ")");
-  }
-  if (ext == "stl") {
-    // STL stores each triangle with its own corners: weld them, as MeshLab does on import,
-    // or every triangle would be a hole of its own.
-    vcg::tri::Clean<CMeshO>::RemoveDuplicateVertex(m);
-    vcg::tri::Allocator<CMeshO>::CompactEveryVector(m);
   }
   if (!(loaded & Mask::IOM_VERTNORMAL))
     vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);

@@ -1,11 +1,18 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang, AddressSanitizer and UndefinedBehaviorSanitizer
-# into build-fuzz/ and runs each for SECONDS (default 20), starting from the seeds in
-# fuzz/corpus/<target>/. New inputs go to build-fuzz/corpus/; a crash leaves its input in
-# build-fuzz/ and fails the script.
+# into build-fuzz/ and runs each from the seeds in fuzz/corpus/<target>/:
+#   run-fuzz.sh SECONDS     explore for SECONDS per target (new inputs kept in build-fuzz/corpus/)
+#   run-fuzz.sh --runs N    N inputs per target from a fixed seed: the same run every time (CI)
+# A crash leaves its input in build-fuzz/ and fails the script.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-seconds=${1:-20}
+if [ "${1:-}" = "--runs" ]; then
+  limit=(-seed=1 -runs="${2:?--runs needs a count}")
+  fresh=1
+else
+  limit=(-max_total_time="${1:-20}")
+  fresh=0
+fi
 bash "$root/scripts/setup-debian.sh"
 if ! dpkg-query -W -f='${Status}\n' clang 2>/dev/null | grep -q '^install ok installed$'; then
   if [ "$(id -u)" -eq 0 ]; then sudo=(); else sudo=(sudo); fi
@@ -21,9 +28,11 @@ export ASAN_OPTIONS=detect_leaks=0:allocator_may_return_null=1
 export UBSAN_OPTIONS=print_stacktrace=1
 cd "$root/build-fuzz"
 for target in fuzz_backend_responses fuzz_coarse_fill fuzz_mesh_file; do
+  # A deterministic run starts from the shipped seeds alone.
+  if [ "$fresh" = 1 ]; then rm -rf "corpus/$target"; fi
   mkdir -p "corpus/$target"
-  echo "fuzz: $target for ${seconds} s" >&2
-  "./bin/$target" -max_total_time="$seconds" -max_len=65536 -timeout=20 -rss_limit_mb=4096 \
+  echo "fuzz: $target ${limit[*]}" >&2
+  "./bin/$target" "${limit[@]}" -max_len=65536 -timeout=20 -rss_limit_mb=4096 \
     -print_final_stats=1 "corpus/$target" "$root/fuzz/corpus/$target" 2>"$target.log" ||
     { tail -60 "$target.log" >&2; echo "fuzz: $target failed; see build-fuzz/$target.log" >&2; exit 1; }
   grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$target.log" | sed "s/^/$target: /" >&2
