@@ -54,6 +54,11 @@ std::string PlyHeaderProblem(const std::string& path) {
     header_bytes += (long long)line.size() + 1;
     if (++lines > 10000 || header_bytes > (1 << 20)) return "a PLY header of over 1 MB";
     if (!line.empty() && line.back() == '\r') line.pop_back();
+    // vcglib reads the header as C strings in fixed buffers.
+    if (line.size() > 500) return "a PLY header line of over 500 characters";
+    for (char c : line)
+      if ((static_cast<unsigned char>(c) < 32 && c != '\t') || c == 127)
+        return "a control character in the PLY header";
     std::istringstream words(line);
     std::string word;
     words >> word;
@@ -108,10 +113,18 @@ std::string ObjIndexProblem(const std::string& path) {
   long long vertices = 0, line_number = 0;
   while (std::getline(in, line)) {
     ++line_number;
-    if (line.size() > 1 && line[0] == 'v' && (line[1] == ' ' || line[1] == '\t')) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    // vcglib counts the vertices in one pass and reads them in another, which disagree on
+    // lines with control characters: a text format has none.
+    for (char c : line)
+      if ((static_cast<unsigned char>(c) < 32 && c != '\t') || c == 127)
+        return "a control character on line " + std::to_string(line_number);
+    std::istringstream words(line);
+    std::string head;
+    words >> head;
+    if (head == "v") {
       ++vertices;
-    } else if (line.size() > 1 && line[0] == 'f' && (line[1] == ' ' || line[1] == '\t')) {
-      std::istringstream words(line.substr(2));
+    } else if (head == "f") {
       std::string token;
       int corners = 0;
       while (words >> token) {
