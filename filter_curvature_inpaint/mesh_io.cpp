@@ -222,6 +222,15 @@ int LoadMesh(const std::string& path, CMeshO& m) {
     m.Clear();
     throw MeshIoError(path + ": not a readable mesh (" + why + ")");
   }
+  // vcglib's OFF reader stores a face's vertex without checking that it exists.
+  const CVertexO* first = m.vert.empty() ? nullptr : &m.vert.front();
+  for (const auto& f : m.face)
+    for (int k = 0; k < 3; ++k)
+      if (!first || f.cV(k) < first || f.cV(k) >= first + m.vert.size()) {
+        m.Clear();
+        throw MeshIoError(path +
+                          ": not a readable mesh (a face names a vertex that does not exist)");
+      }
   if (!(loaded & Mask::IOM_VERTNORMAL))
     vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
   else
