@@ -183,6 +183,20 @@ void ReadStl(const std::string& path, CMeshO& m) {
     for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[3 * t + k];
 }
 
+/// vcglib's OFF reader reads freed memory on bytes outside printable ASCII: an OFF file is
+/// numbers, words and comments, so anything else is refused. Returns why, or "".
+std::string OffCharacterProblem(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  long long line = 1;
+  for (char c; in.get(c);) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n') ++line;
+    if ((u < 32 && c != '\t' && c != '\r' && c != '\n') || u >= 127)
+      return "a byte outside printable ASCII on line " + std::to_string(line);
+  }
+  return "";
+}
+
 } // namespace
 
 int LoadMesh(const std::string& path, CMeshO& m) {
@@ -194,6 +208,7 @@ int LoadMesh(const std::string& path, CMeshO& m) {
   if (!std::ifstream(path).good()) throw MeshIoError(path + ": cannot open the file");
   const std::string problem = ext == "ply"   ? PlyHeaderProblem(path)
                               : ext == "obj" ? ObjIndexProblem(path)
+                              : ext == "off" ? OffCharacterProblem(path)
                                              : "";
   if (!problem.empty()) throw MeshIoError(path + ": not a readable mesh (" + problem + ")");
   if (ext == "stl") {
