@@ -7,7 +7,7 @@ whole process, and the same for merely loading the mesh (`curvature-inpaint info
     python3 bench/run_scale_bench.py
 
 The mesh: Igea and the armadillo, each subdivided once (1-to-4), side by side (1.1M faces);
-200 holes punched at random vertices with radii of 2-25 mean edge lengths, kept apart.
+200 holes punched at random vertices with radii of 2-12 mean edge lengths, kept apart.
 """
 import os
 import re
@@ -45,7 +45,7 @@ def main():
         closed = os.path.join(tmp, "closed.ply")
         sh([tools, "append", parts[0], parts[1], closed])
         holed = os.path.join(tmp, "holed.ply")
-        sh([tools, "punch-many", closed, holed, "200", "2", "25"])
+        sh([tools, "punch-many", closed, holed, "200", "2", "12"])
         info = sh([tool, "info", holed]).stdout
         faces = int(re.search(r"faces (\d+)", info).group(1))
         edges = [int(e) for e in info.split("hole_edges")[1].split()]

@@ -374,6 +374,13 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
           HoleWork& w = work[k];
           DeformHole(images.holes[k], size_t(k), result.coarse, params, inpaint, chosen, w.report,
                      w.hv, w.points, w.final_image);
+          // Only the positions are needed from here on unless the images are written: with
+          // hundreds of holes, their pictures would outweigh the mesh.
+          if (params.images_dir.empty()) {
+            w.hv = HoleVariations();
+            std::vector<uint8_t>().swap(images.holes[k].image.rgb);
+            std::vector<uint8_t>().swap(images.holes[k].image.hole);
+          }
         },
         [&](int, int done) {
           progress = int(100.0 * done / std::max(count, 1));
