@@ -7,6 +7,7 @@
 #include <wrap/io_trimesh/import.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -183,18 +184,69 @@ void ReadStl(const std::string& path, CMeshO& m) {
     for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[3 * t + k];
 }
 
-/// vcglib's OFF reader reads freed memory on bytes outside printable ASCII: an OFF file is
-/// numbers, words and comments, so anything else is refused. Returns why, or "".
-std::string OffCharacterProblem(const std::string& path) {
+/// Reads an OFF file (OFF, COFF, NOFF, STOFF and their combinations; positions and faces,
+/// polygons fanned into triangles) into `m`. vcglib's OFF reader overruns its buffers and
+/// reads freed memory on malformed files, so the product reads OFF itself. Throws MeshIoError.
+void ReadOff(const std::string& path, CMeshO& m) {
   std::ifstream in(path, std::ios::binary);
-  long long line = 1;
-  for (char c; in.get(c);) {
-    const auto u = static_cast<unsigned char>(c);
-    if (c == '\n') ++line;
-    if ((u < 32 && c != '\t' && c != '\r' && c != '\n') || u >= 127)
-      return "a byte outside printable ASCII on line " + std::to_string(line);
+  auto fail = [&](const std::string& why) {
+    throw MeshIoError(path + ": not a readable mesh (" + why + ")");
+  };
+  // The file's lines without comments and blank lines.
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) {
+    const auto hash = line.find('#');
+    if (hash != std::string::npos) line.erase(hash);
+    if (line.find_first_not_of(" \t\r") != std::string::npos) lines.push_back(line);
   }
-  return "";
+  size_t at = 0;
+  if (at < lines.size()) {
+    std::istringstream first(lines[0]);
+    std::string keyword;
+    first >> keyword;
+    if (keyword.size() >= 3 && keyword.compare(keyword.size() - 3, 3, "OFF") == 0) {
+      if (keyword.find('4') != std::string::npos || keyword.find('n') != std::string::npos)
+        fail("a " + keyword + " file: only three-dimensional OFF is read");
+      lines[0] = lines[0].substr(lines[0].find(keyword) + keyword.size());
+      if (lines[0].find_first_not_of(" \t\r") == std::string::npos) ++at;
+    }
+  }
+  long long nv = -1, nf = -1, ne = 0;
+  if (at >= lines.size() || !(std::istringstream(lines[at++]) >> nv >> nf >> ne) || nv < 0 ||
+      nf < 0)
+    fail("no vertex and face counts");
+  if (nv > (long long)(lines.size() - at) || nf > (long long)(lines.size() - at) - nv)
+    fail("the counts ask for more lines than the file holds");
+  std::vector<Point3m> points(static_cast<size_t>(nv));
+  for (long long v = 0; v < nv; ++v) {
+    std::istringstream words(lines[at++]);
+    if (!(words >> points[v][0] >> points[v][1] >> points[v][2]))
+      fail("vertex " + std::to_string(v) + " has no three coordinates");
+  }
+  std::vector<std::array<int, 3>> triangles;
+  for (long long f = 0; f < nf; ++f) {
+    std::istringstream words(lines[at++]);
+    long long corners = 0;
+    if (!(words >> corners) || corners < 3 || corners > nv)
+      fail("face " + std::to_string(f) + " has no valid corner count");
+    std::vector<int> index(static_cast<size_t>(corners));
+    for (auto& i : index) {
+      long long v = -1;
+      if (!(words >> v) || v < 0 || v >= nv)
+        fail("face " + std::to_string(f) + " names a vertex that does not exist");
+      i = int(v);
+    }
+    for (long long k = 1; k + 1 < corners; ++k)
+      triangles.push_back({index[0], index[size_t(k)], index[size_t(k + 1)]});
+  }
+  m.Clear();
+  auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, points.size());
+  for (const auto& p : points) (vi++)->P() = p;
+  auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, triangles.size());
+  for (const auto& t : triangles) {
+    for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[t[k]];
+    ++fi;
+  }
 }
 
 } // namespace
@@ -208,9 +260,14 @@ int LoadMesh(const std::string& path, CMeshO& m) {
   if (!std::ifstream(path).good()) throw MeshIoError(path + ": cannot open the file");
   const std::string problem = ext == "ply"   ? PlyHeaderProblem(path)
                               : ext == "obj" ? ObjIndexProblem(path)
-                              : ext == "off" ? OffCharacterProblem(path)
                                              : "";
   if (!problem.empty()) throw MeshIoError(path + ": not a readable mesh (" + problem + ")");
+  if (ext == "off") {
+    ReadOff(path, m);
+    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
+    vcg::tri::UpdateBounding<CMeshO>::Box(m);
+    return vcg::tri::io::Mask::IOM_VERTCOORD | vcg::tri::io::Mask::IOM_FACEINDEX;
+  }
   if (ext == "stl") {
     ReadStl(path, m);
     // STL stores each triangle with its own corners: weld them, as MeshLab does on import,
