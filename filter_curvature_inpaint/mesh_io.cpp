@@ -34,6 +34,14 @@ bool Supported(const std::string& ext) {
   return ext == "ply" || ext == "off" || ext == "obj" || ext == "stl";
 }
 
+/// Whether a line of a text format holds a control character (a tab aside), which vcglib's
+/// readers, working on C strings in passes that must agree, do not survive.
+bool HasControlCharacter(const std::string& line) {
+  return std::any_of(line.begin(), line.end(), [](char c) {
+    return (static_cast<unsigned char>(c) < 32 && c != '\t') || c == 127;
+  });
+}
+
 /// Checks a PLY header before vcglib's reader sees it: that reader dereferences missing
 /// tokens (an "element" line without a count crashes it) and allocates whatever count a
 /// header declares. Returns why the header is refused, or "" when it is sound.
@@ -57,9 +65,7 @@ std::string PlyHeaderProblem(const std::string& path) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     // vcglib reads the header as C strings in fixed buffers.
     if (line.size() > 500) return "a PLY header line of over 500 characters";
-    for (char c : line)
-      if ((static_cast<unsigned char>(c) < 32 && c != '\t') || c == 127)
-        return "a control character in the PLY header";
+    if (HasControlCharacter(line)) return "a control character in the PLY header";
     std::istringstream words(line);
     std::string word;
     words >> word;
@@ -117,9 +123,8 @@ std::string ObjIndexProblem(const std::string& path) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     // vcglib counts the vertices in one pass and reads them in another, which disagree on
     // lines with control characters: a text format has none.
-    for (char c : line)
-      if ((static_cast<unsigned char>(c) < 32 && c != '\t') || c == 127)
-        return "a control character on line " + std::to_string(line_number);
+    if (HasControlCharacter(line))
+      return "a control character on line " + std::to_string(line_number);
     std::istringstream words(line);
     std::string head;
     words >> head;

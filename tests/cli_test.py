@@ -231,6 +231,22 @@ class BadInput(TempDirTest):
         src = write_non_manifold_ply(self.path("nonmanifold.ply"))
         self.assert_refused(src, ["more than two faces"])
 
+    def test_files_that_broke_vcglibs_readers(self):
+        # The inputs fuzzing found (fuzz/corpus/fuzz_mesh_file/regression_*; first byte: the
+        # format): each is refused with one line or read, never a crash or a hang.
+        corpus = os.path.join(SOURCE, "fuzz", "corpus", "fuzz_mesh_file")
+        for name in sorted(n for n in os.listdir(corpus) if n.startswith("regression_")):
+            with self.subTest(name=name):
+                with open(os.path.join(corpus, name), "rb") as f:
+                    data = f.read()
+                src = self.path(name + "." + ("ply", "off", "obj", "stl")[data[0] % 4])
+                with open(src, "wb") as f:
+                    f.write(data[1:])
+                r = run([TOOL, "info", src], timeout=60)
+                self.assertIn(r.returncode, (0, 1), r.stderr)  # not killed by a signal
+                if r.returncode:
+                    self.assertRegex(r.stderr, r"^curvature-inpaint: .*not a readable mesh")
+
     def test_missing_file_and_unknown_format(self):
         r = run([TOOL, "coarse", self.path("absent.ply"), self.path("out.ply")])
         self.assertNotEqual(r.returncode, 0)
