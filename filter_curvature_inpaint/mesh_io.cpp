@@ -128,6 +128,11 @@ std::string ObjIndexProblem(const std::string& path) {
     std::istringstream words(line);
     std::string head;
     words >> head;
+    // vcglib counts the vertices it allocates from lines starting "v " and reads every line
+    // whose first word is "v": the two must be the same lines.
+    if ((head == "v" || head == "f") &&
+        !(line.size() > 2 && line[0] == head[0] && (line[1] == ' ' || line[1] == '\t')))
+      return "a \"" + head + "\" statement not at the start of line " + std::to_string(line_number);
     if (head == "v") {
       ++vertices;
     } else if (head == "f") {
