@@ -26,7 +26,9 @@ cmake -S "$root" -B "$root/build-fuzz" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DCURVATURE_INPAINT_FUZZ=ON -DBUILD_TESTING=OFF >/dev/null
 cmake --build "$root/build-fuzz" -j2 --target fuzz_backend_responses fuzz_coarse_fill fuzz_mesh_file
-export ASAN_OPTIONS=detect_leaks=0:allocator_may_return_null=1
+# A declared size far beyond the input (vcglib's OBJ reader can ask for tens of GB) must fail
+# as std::bad_alloc, which the reading reports as an error, not exhaust the machine.
+export ASAN_OPTIONS=detect_leaks=0:allocator_may_return_null=1:max_allocation_size_mb=2048
 export UBSAN_OPTIONS=print_stacktrace=1
 cd "$root/build-fuzz"
 for target in fuzz_backend_responses fuzz_coarse_fill fuzz_mesh_file; do
@@ -34,7 +36,7 @@ for target in fuzz_backend_responses fuzz_coarse_fill fuzz_mesh_file; do
   if [ "$fresh" = 1 ]; then rm -rf "corpus/$target"; fi
   mkdir -p "corpus/$target"
   echo "fuzz: $target ${limit[*]}" >&2
-  "./bin/$target" "${limit[@]}" -max_len=65536 -timeout=20 -rss_limit_mb=4096 \
+  "./bin/$target" "${limit[@]}" -max_len=65536 -timeout=20 -rss_limit_mb=4096 -malloc_limit_mb=65536 \
     -print_final_stats=1 "corpus/$target" "$root/fuzz/corpus/$target" 2>"$target.log" ||
     { tail -60 "$target.log" >&2; echo "fuzz: $target failed; see build-fuzz/$target.log" >&2; exit 1; }
   grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$target.log" | sed "s/^/$target: /" >&2
