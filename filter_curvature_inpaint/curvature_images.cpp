@@ -118,7 +118,7 @@ void BuildHoleImage(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vcg_e
 } // namespace
 
 CurvatureImagesResult ComputeCurvatureImages(CMeshO& m, const CurvatureImagesParams& params,
-                                             vcg::CallBackPos* cb) {
+                                             vcg::CallBackPos* cb, const HoleImageSink& sink) {
   CurvatureImagesResult result;
   MeshCheckpoint checkpoint(m);
   result.coarse = CoarseFill(m, params.coarse, cb);
@@ -148,10 +148,12 @@ CurvatureImagesResult ComputeCurvatureImages(CMeshO& m, const CurvatureImagesPar
           hi.hole = index[i];
           BuildHoleImage(m, vf, result.coarse.box, regions[i], params, hi);
           hi.seconds = seg_each + std::chrono::duration<double>(Clock::now() - t0).count();
+          if (sink) sink(result.coarse, i, hi);
         },
         [&](int, int done) {
-          const std::string msg = "Curvature images: hole " + std::to_string(done) + " of " +
-                                  std::to_string(filled.size());
+          const std::string msg =
+              std::string(sink ? "Curvature Inpaint: hole " : "Curvature images: hole ") +
+              std::to_string(done) + " of " + std::to_string(filled.size());
           return !cb || cb(int(100.0 * done / filled.size()), msg.c_str());
         });
   } catch (...) {

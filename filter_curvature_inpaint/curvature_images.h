@@ -12,6 +12,7 @@
 #include <vcg_ext/mvc_parameterization.h>
 #include <vcg_ext/patch_extraction.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -48,11 +49,18 @@ struct CurvatureImagesResult {
   double adjacency_seconds = 0; ///< the one pass over the mesh all holes share
 };
 
-/// Fills the holes of `m` (stages 0-2), then builds every filled hole's image and colours the
-/// patch vertices with their curvature colours. Throws vcg_ext::InvalidMeshError or
-/// CancelledError with `m` exactly as it was.
+/// Receives hole k's image as soon as it is built, with the coarse fill it belongs to, on the
+/// thread that built it (holes in any order, several at once; it may throw, which stops the
+/// rest): a caller that uses each image and drops it never holds them all at the same time.
+using HoleImageSink =
+    std::function<void(const vcg_ext::CoarseFillResult& coarse, int k, HoleImage& hole)>;
+
+/// Fills the holes of `m` (stages 0-2), then builds every filled hole's image, hands it to
+/// `sink` if given, and colours the patch vertices with their curvature colours. Throws
+/// vcg_ext::InvalidMeshError, CancelledError or what `sink` throws, with `m` exactly as it was.
 CurvatureImagesResult ComputeCurvatureImages(CMeshO& m, const CurvatureImagesParams& params,
-                                             vcg::CallBackPos* cb = nullptr);
+                                             vcg::CallBackPos* cb = nullptr,
+                                             const HoleImageSink& sink = {});
 
 /// Writes hole_<k>_curvature.png, hole_<k>_rgba.png, hole_<k>_mask.png and hole_<k>.json for
 /// every hole with an image (k from 1). Throws std::runtime_error naming the file it could

@@ -16,6 +16,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
+#include <mutex>
 #include <cstdio>
 #include <sstream>
 
@@ -314,8 +316,12 @@ double ScoreVariation(const QImage& variation, const QImage& mask) {
         known.push_back(inv.t);
     }
   if (hole_pixels == 0 || known.empty()) return 0;
-  std::sort(known.begin(), known.end());
-  const double lo = known[known.size() / 20] - 0.05, hi = known[known.size() * 19 / 20] + 0.05;
+  auto percentile = [&known](size_t k) {
+    std::nth_element(known.begin(), known.begin() + k, known.end());
+    return known[k];
+  };
+  const double lo = percentile(known.size() / 20) - 0.05,
+               hi = percentile(known.size() * 19 / 20) + 0.05;
   double jump = 0, outside = 0;
   int border = 0;
   for (int y = 0; y < n; ++y)
@@ -344,7 +350,53 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
   HoleFillResult result;
   CurvatureImagesParams ip = params.images;
   ip.color_vertices = false;
-  CurvatureImagesResult images = ComputeCurvatureImages(m, ip, cb);
+  // Stages 8-9 per hole, on the hole's own patch. With the embedded backend (or given images)
+  // each hole is inpainted and deformed on the thread that built its image, as soon as it is
+  // built, and its pictures are written if asked for and dropped: with hundreds of holes they
+  // would outweigh the mesh. A service, which would rate-limit parallel calls, is
+  // asked one hole at a time once every image is built. The mesh is only written afterwards,
+  // on this thread.
+  const bool local =
+      chosen || !params.inpainted_dir.empty() || params.inpaint.backend == "embedded";
+  int progress = 0;
+  const InpaintParams inpaint = WithCancel(params, local ? nullptr : cb, &progress);
+  struct HoleWork {
+    HoleFillReport report;
+    HoleVariations hv;
+    std::vector<Eigen::Vector3d> points; ///< the deformed patch; empty: keep the coarse fill
+    QImage final_image;
+    QImage montage_row; ///< when the images are written
+  };
+  std::map<int, HoleWork> work; // by hole; nodes stay put while other threads insert
+  std::mutex work_mutex;
+  auto fill_hole = [&](const vcg_ext::CoarseFillResult& coarse, int k, HoleImage& hi) {
+    if (chosen && size_t(k) >= chosen->size())
+      throw std::runtime_error("the previewed variations are for " +
+                               std::to_string(chosen->size()) +
+                               " holes, the mesh has more: preview again with the same settings");
+    HoleWork* w;
+    {
+      std::lock_guard<std::mutex> lock(work_mutex);
+      w = &work[k];
+    }
+    DeformHole(hi, size_t(k), coarse, params, inpaint, chosen, w->report, w->hv, w->points,
+               w->final_image);
+    if (!params.images_dir.empty() && !w->points.empty()) {
+      const std::string base = params.images_dir + "/hole_" + std::to_string(k + 1);
+      SavePng(w->hv.image, base + "_coarse.png");
+      SavePng(w->hv.mask, base + "_mask.png");
+      for (size_t j = 0; j < w->hv.variations.size(); ++j)
+        SavePng(w->hv.variations[j], base + "_variation_" + std::to_string(j + 1) + ".png");
+      SavePng(w->final_image, base + "_final.png");
+      w->montage_row = MontageRow(w->hv, w->report.pick, w->final_image);
+    }
+    w->hv = HoleVariations();
+    w->final_image = QImage();
+    std::vector<uint8_t>().swap(hi.image.rgb);
+    std::vector<uint8_t>().swap(hi.image.hole);
+  };
+  CurvatureImagesResult images =
+      ComputeCurvatureImages(m, ip, cb, local ? HoleImageSink(fill_hole) : HoleImageSink());
   result.coarse = images.coarse;
   try {
     if (chosen && chosen->size() != images.holes.size())
@@ -352,60 +404,28 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
                                std::to_string(chosen->size()) + " holes, the mesh has " +
                                std::to_string(images.holes.size()) +
                                ": preview again with the same settings");
-    // Stages 8-9 per hole, on the hole's own patch: in parallel with the embedded backend (or
-    // given images); one at a time with a service, which would rate-limit parallel calls.
-    // The mesh is only written afterwards, on this thread.
-    const bool local =
-        chosen || !params.inpainted_dir.empty() || params.inpaint.backend == "embedded";
-    const int threads = local ? params.images.coarse.threads : 1;
-    int progress = 0;
-    const InpaintParams inpaint = WithCancel(params, threads == 1 ? cb : nullptr, &progress);
-    struct HoleWork {
-      HoleFillReport report;
-      HoleVariations hv;
-      std::vector<Eigen::Vector3d> points; ///< the deformed patch; empty: keep the coarse fill
-      QImage final_image;
-    };
-    std::vector<HoleWork> work(images.holes.size());
-    const int count = int(images.holes.size());
-    vcg_ext::ParallelFor(
-        count, threads,
-        [&](int k) {
-          HoleWork& w = work[k];
-          DeformHole(images.holes[k], size_t(k), result.coarse, params, inpaint, chosen, w.report,
-                     w.hv, w.points, w.final_image);
-          // Only the positions are needed from here on unless the images are written: with
-          // hundreds of holes, their pictures would outweigh the mesh.
-          if (params.images_dir.empty()) {
-            w.hv = HoleVariations();
-            std::vector<uint8_t>().swap(images.holes[k].image.rgb);
-            std::vector<uint8_t>().swap(images.holes[k].image.hole);
-          }
-        },
-        [&](int, int done) {
-          progress = int(100.0 * done / std::max(count, 1));
-          const std::string msg = "Curvature Inpaint: inpainted and deformed hole " +
-                                  std::to_string(done) + " of " + std::to_string(count);
-          return !cb || cb(progress, msg.c_str());
-        });
+    if (!local) {
+      const int count = int(images.holes.size());
+      vcg_ext::ParallelFor(
+          count, 1, [&](int k) { fill_hole(result.coarse, k, images.holes[k]); },
+          [&](int, int done) {
+            progress = int(100.0 * done / std::max(count, 1));
+            const std::string msg = "Curvature Inpaint: inpainted and deformed hole " +
+                                    std::to_string(done) + " of " + std::to_string(count);
+            return !cb || cb(progress, msg.c_str());
+          });
+    }
     std::vector<QImage> montage_rows;
-    for (size_t k = 0; k < work.size(); ++k) {
+    for (size_t k = 0; k < images.holes.size(); ++k) {
       const HoleImage& hi = images.holes[k];
-      HoleWork& w = work[k];
+      HoleWork& w = work.at(int(k));
       result.holes.push_back(w.report);
       if (w.points.empty()) continue;
       const std::vector<char> free = FreeVertices(hi.patch);
       for (size_t i = 0; i < w.points.size(); ++i)
         if (free[i])
           m.vert[hi.patch.vertices[i]].P() = result.coarse.box.FromUnit<Scalarm>(w.points[i]);
-      if (params.images_dir.empty()) continue;
-      const std::string base = params.images_dir + "/hole_" + std::to_string(k + 1);
-      SavePng(w.hv.image, base + "_coarse.png");
-      SavePng(w.hv.mask, base + "_mask.png");
-      for (size_t j = 0; j < w.hv.variations.size(); ++j)
-        SavePng(w.hv.variations[j], base + "_variation_" + std::to_string(j + 1) + ".png");
-      SavePng(w.final_image, base + "_final.png");
-      montage_rows.push_back(MontageRow(w.hv, w.report.pick, w.final_image));
+      if (!w.montage_row.isNull()) montage_rows.push_back(w.montage_row);
     }
     if (!montage_rows.empty()) {
       int w = 0, h = 0;

@@ -15,6 +15,7 @@
 #include <vcg_ext/curvature_colormap.h>
 
 #include <Eigen/Sparse>
+#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
@@ -131,9 +132,28 @@ bool SolveBiharmonic(Field& f) {
     }
   Eigen::SparseMatrix<double> A(n, n);
   A.setFromTriplets(a.begin(), a.end());
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
-  if (solver.info() != Eigen::Success) return false;
-  const Eigen::VectorXd x = solver.solve(b);
+  Eigen::VectorXd x;
+  // A pull towards the coarse curvature on (nearly) every unknown pixel bounds the smallest
+  // eigenvalue away from zero: preconditioned conjugate gradients then converge in under a
+  // hundred iterations, a third of the time a factorization takes at 256². A hole continued
+  // from its border alone is badly conditioned and gets the factorization.
+  const auto pulled =
+      std::count_if(f.prior_weight.begin(), f.prior_weight.end(), [](double w) { return w > 0; });
+  bool solved = false;
+  if (pulled >= 0.9 * n) {
+    Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper,
+                             Eigen::IncompleteCholesky<double>>
+        cg(A);
+    cg.setTolerance(1e-10);
+    cg.setMaxIterations(1000);
+    x = cg.solve(b);
+    solved = cg.info() == Eigen::Success && x.allFinite();
+  }
+  if (!solved) {
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(A);
+    if (ldlt.info() != Eigen::Success) return false;
+    x = ldlt.solve(b);
+  }
   if (!x.allFinite()) return false;
   for (size_t i = 0; i < f.v.size(); ++i)
     if (index[i] >= 0) f.v[i] = x[index[i]];
@@ -271,6 +291,10 @@ std::vector<QImage> InpaintEmbedded(const QImage& image, const QImage& mask,
       }
   }
 
+  // Hann window: overlapping blocks blend without seams.
+  std::vector<double> hann(block);
+  for (int i = 0; i < block; ++i) hann[i] = std::sin(M_PI * (i + 0.5) / block);
+
   std::vector<QImage> out;
   for (int variation = 0; variation < p.variations; ++variation) {
     std::vector<double> detail(f.v.size(), 0.0), weight(f.v.size(), 0.0);
@@ -290,9 +314,7 @@ std::vector<QImage> InpaintEmbedded(const QImage& image, const QImage& mask,
             for (int i = 0; i < block; ++i) {
               const int x = bx + i, y = by + j;
               if (x < 0 || y < 0 || x >= f.w || y >= f.h || f.is_known(x, y)) continue;
-              // Hann window: overlapping blocks blend without seams.
-              const double w =
-                  std::sin(M_PI * (i + 0.5) / block) * std::sin(M_PI * (j + 0.5) / block);
+              const double w = hann[i] * hann[j];
               detail[size_t(y) * f.w + x] +=
                   w * w * residual[size_t(src.second + j) * f.w + src.first + i];
               weight[size_t(y) * f.w + x] += w * w;
