@@ -34,8 +34,17 @@ bool Supported(const std::string& ext) {
   return ext == "ply" || ext == "off" || ext == "obj" || ext == "stl";
 }
 
-/// Whether a line of a text format holds a control character (a tab aside), which vcglib's
-/// readers, working on C strings in passes that must agree, do not survive.
+/// At most `max` characters of a file's text for an error message, anything but printable
+/// ASCII shown as '?' (a binary file's bytes would garble the terminal or the log).
+std::string Excerpt(const std::string& text, size_t max) {
+  std::string out = text.substr(0, max);
+  for (char& c : out)
+    if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) c = '?';
+  return out;
+}
+
+/// Whether a header line holds a control character (a tab aside), which vcglib's PLY header
+/// parser, working on C strings, does not survive.
 bool HasControlCharacter(const std::string& line) {
   return std::any_of(line.begin(), line.end(), [](char c) {
     return (static_cast<unsigned char>(c) < 32 && c != '\t') || c == 127;
@@ -85,7 +94,7 @@ std::string PlyHeaderProblem(const std::string& path) {
       words >> name >> count;
       if (name.empty() || count.empty() ||
           count.find_first_not_of("0123456789") != std::string::npos || count.size() > 12)
-        return "a PLY element without a valid count: \"" + line.substr(0, 80) + "\"";
+        return "a PLY element without a valid count: \"" + Excerpt(line, 80) + "\"";
       close_element();
       element_count = std::stoll(count);
       element_min = 0;
@@ -94,11 +103,11 @@ std::string PlyHeaderProblem(const std::string& path) {
       words >> type >> a >> b;
       if (type == "list") {
         if (!kSizes.count(a) || !kSizes.count(b) || !(words >> word))
-          return "a malformed PLY list property: \"" + line.substr(0, 80) + "\"";
+          return "a malformed PLY list property: \"" + Excerpt(line, 80) + "\"";
         element_min += binary ? kSizes.at(a) : 2;
       } else {
         if (!kSizes.count(type) || a.empty())
-          return "a malformed PLY property: \"" + line.substr(0, 80) + "\"";
+          return "a malformed PLY property: \"" + Excerpt(line, 80) + "\"";
         element_min += binary ? kSizes.at(type) : 2;
       }
     } else if (word == "end_header") {
@@ -110,48 +119,6 @@ std::string PlyHeaderProblem(const std::string& path) {
     }
   }
   return "a PLY header without end_header";
-}
-
-/// Checks an OBJ file's face indices before vcglib's reader sees it: that reader reads the
-/// vertices a face names before it checks them. Returns why the file is refused, or "".
-std::string ObjIndexProblem(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  long long vertices = 0, line_number = 0;
-  while (std::getline(in, line)) {
-    ++line_number;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    // vcglib counts the vertices in one pass and reads them in another, which disagree on
-    // lines with control characters: a text format has none.
-    if (HasControlCharacter(line))
-      return "a control character on line " + std::to_string(line_number);
-    std::istringstream words(line);
-    std::string head;
-    words >> head;
-    // vcglib counts the vertices it allocates from lines starting "v " and reads every line
-    // whose first word is "v": the two must be the same lines.
-    if ((head == "v" || head == "f") &&
-        !(line.size() > 2 && line[0] == head[0] && (line[1] == ' ' || line[1] == '\t')))
-      return "a \"" + head + "\" statement not at the start of line " + std::to_string(line_number);
-    if (head == "v") {
-      ++vertices;
-    } else if (head == "f") {
-      std::string token;
-      int corners = 0;
-      while (words >> token) {
-        ++corners;
-        const std::string index = token.substr(0, token.find('/'));
-        char* end = nullptr;
-        const long long i = std::strtoll(index.c_str(), &end, 10);
-        if (index.empty() || *end != '\0' || i == 0 || i > vertices || i < -vertices)
-          return "face on line " + std::to_string(line_number) + " names vertex \"" +
-                 index.substr(0, 20) + "\" of " + std::to_string(vertices);
-      }
-      if (corners < 3)
-        return "face on line " + std::to_string(line_number) + " has fewer than three corners";
-    }
-  }
-  return "";
 }
 
 /// Reads an STL file, binary or ASCII, into `m` (a triangle soup, welded by the caller).
@@ -259,6 +226,83 @@ void ReadOff(const std::string& path, CMeshO& m) {
   }
 }
 
+/// Reads an OBJ file's geometry into `m`: vertices ("v x y z", optionally with "r g b" in
+/// [0, 1]) and faces ("f" with 1-based or negative indices, "v/vt/vn" corners, polygons fanned
+/// into triangles); texture coordinates, normals, groups and materials are skipped. vcglib's
+/// OBJ reader keeps a counter in a static variable across files and reads vertex colours past
+/// the end of its array, so the product reads OBJ itself. Sets `has_color` when every vertex
+/// carries a colour. Throws MeshIoError.
+void ReadObj(const std::string& path, CMeshO& m, bool& has_color) {
+  std::ifstream in(path, std::ios::binary);
+  auto fail = [&](long long line, const std::string& why) {
+    throw MeshIoError(path + ": not a readable mesh (line " + std::to_string(line) + ": " + why +
+                      ")");
+  };
+  std::vector<Point3m> points;
+  std::vector<vcg::Color4b> colors;
+  std::vector<std::array<int, 3>> triangles;
+  long long number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++number;
+    // A backslash at the end continues the statement on the next line.
+    while (!line.empty() && (line.back() == '\r' || line.back() == '\\')) {
+      const bool continued = line.back() == '\\';
+      line.pop_back();
+      std::string next;
+      if (continued && std::getline(in, next)) line += " " + next, ++number;
+    }
+    const auto hash = line.find('#');
+    if (hash != std::string::npos) line.erase(hash);
+    std::istringstream words(line);
+    std::string head;
+    words >> head;
+    if (head == "v") {
+      double x[6];
+      int n = 0;
+      for (std::string word; n < 6 && words >> word; ++n) {
+        char* end = nullptr;
+        x[n] = std::strtod(word.c_str(), &end);
+        if (*end != '\0') fail(number, "\"" + Excerpt(word, 20) + "\" is not a number");
+      }
+      if (n < 3) fail(number, "a vertex without three coordinates");
+      points.emplace_back(Scalarm(x[0]), Scalarm(x[1]), Scalarm(x[2]));
+      if (n == 6) {
+        auto byte = [](double c) {
+          return (unsigned char)std::lround(255 * std::max(0.0, std::min(1.0, c == c ? c : 0.0)));
+        };
+        colors.emplace_back(byte(x[3]), byte(x[4]), byte(x[5]), 255);
+      }
+    } else if (head == "f") {
+      std::vector<int> corners;
+      for (std::string token; words >> token;) {
+        const std::string index = token.substr(0, token.find('/'));
+        char* end = nullptr;
+        const long long i = std::strtoll(index.c_str(), &end, 10);
+        const long long nv = (long long)points.size();
+        if (index.empty() || *end != '\0' || i == 0 || i > nv || i < -nv)
+          fail(number,
+               "a face names vertex \"" + Excerpt(index, 20) + "\" of " + std::to_string(nv));
+        corners.push_back(int(i > 0 ? i - 1 : nv + i));
+      }
+      if (corners.size() < 3) fail(number, "a face with fewer than three corners");
+      for (size_t k = 1; k + 1 < corners.size(); ++k)
+        triangles.push_back({corners[0], corners[k], corners[k + 1]});
+    }
+  }
+  has_color = !points.empty() && colors.size() == points.size();
+  m.Clear();
+  auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, points.size());
+  for (size_t v = 0; v < points.size(); ++v, ++vi) {
+    vi->P() = points[v];
+    if (has_color) vi->C() = colors[v];
+  }
+  auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, triangles.size());
+  for (const auto& t : triangles) {
+    for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[t[k]];
+    ++fi;
+  }
+}
+
 } // namespace
 
 int LoadMesh(const std::string& path, CMeshO& m) {
@@ -268,10 +312,16 @@ int LoadMesh(const std::string& path, CMeshO& m) {
   if (!Supported(ext))
     throw MeshIoError(path + ": unsupported format \"" + ext + "\" (use .ply, .off, .obj or .stl)");
   if (!std::ifstream(path).good()) throw MeshIoError(path + ": cannot open the file");
-  const std::string problem = ext == "ply"   ? PlyHeaderProblem(path)
-                              : ext == "obj" ? ObjIndexProblem(path)
-                                             : "";
+  const std::string problem = ext == "ply" ? PlyHeaderProblem(path) : "";
   if (!problem.empty()) throw MeshIoError(path + ": not a readable mesh (" + problem + ")");
+  if (ext == "obj") {
+    bool has_color = false;
+    ReadObj(path, m, has_color);
+    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
+    vcg::tri::UpdateBounding<CMeshO>::Box(m);
+    return vcg::tri::io::Mask::IOM_VERTCOORD | vcg::tri::io::Mask::IOM_FACEINDEX |
+           (has_color ? int(vcg::tri::io::Mask::IOM_VERTCOLOR) : 0);
+  }
   if (ext == "off") {
     ReadOff(path, m);
     vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
@@ -304,7 +354,7 @@ int LoadMesh(const std::string& path, CMeshO& m) {
     m.Clear();
     throw MeshIoError(path + ": not a readable mesh (" + why + ")");
   }
-  // vcglib's OFF reader stores a face's vertex without checking that it exists.
+  // Whatever vcglib's PLY reader missed, a face must name vertices that exist.
   const CVertexO* first = m.vert.empty() ? nullptr : &m.vert.front();
   for (const auto& f : m.face)
     for (int k = 0; k < 3; ++k)

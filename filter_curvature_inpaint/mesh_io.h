@@ -1,5 +1,7 @@
-// Reading and writing meshes outside MeshLab (PLY, OFF, OBJ, STL through vcglib), for the
-// command-line tool. MeshLab's own I/O plugins do this inside the GUI and meshlabserver.
+// Reading and writing meshes outside MeshLab (PLY, OFF, OBJ, STL), for the command-line tool.
+// PLY is read by vcglib after a check of its header; OFF, OBJ and STL by the product's own
+// readers, since vcglib's fail on malformed files; all are written by vcglib. MeshLab's own
+// I/O plugins do this inside the GUI and meshlabserver.
 #pragma once
 
 #include <common/ml_mesh_type.h>

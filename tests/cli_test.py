@@ -136,6 +136,24 @@ class CoarseFill(TempDirTest):
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertEqual(info(out)["holes"], 1, ext)  # only the outer border is left
 
+    def test_obj_as_exporters_write_it(self):
+        # Polygons, v/vt/vn corners, negative indices, a continued line, per-vertex colours,
+        # groups and materials: the geometry and the colours come through.
+        src = self.path("quad.obj")
+        with open(src, "w") as f:
+            f.write("# exported\nmtllib scan.mtl\no scan\n"
+                    "v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 1 1 0 0 0 1\nv 0 1 0 \\\n 1 1 0\n"
+                    "v 0.5 2 0 0 1 1\nvt 0 0\nvn 0 0 1\ng part\nusemtl skin\ns 1\n"
+                    "f 1/1/1 2/1/1 3/1/1 4/1/1\r\nf -2//1 -3//1 -1//1\nl 1 2\n")
+        before = info(src)
+        self.assertEqual((before["vertices"], before["faces"], before["hole_edges"]), (5, 3, [5]))
+        out = self.path("quad_filled.obj")
+        r = run([TOOL, "coarse", src, out])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(info(out)["holes"], 0)
+        with open(out) as f:
+            colours = [line.split()[4:7] for line in f if line.startswith("v ")]
+        self.assertEqual(colours[3], ["1.000000", "1.000000", "0.000000"])
 
 class CurvatureImages(TempDirTest):
     def test_images_of_every_hole_and_a_montage(self):
@@ -181,6 +199,20 @@ class BadInput(TempDirTest):
         with open(src, "w") as f:
             f.write("these are my notes, not a mesh\n")
         self.assert_refused(src, ["not a readable mesh"])
+
+    def test_malformed_obj(self):
+        for name, text, words in (
+                ("short_vertex", "v 0 0 0\nv 1 0\n", ["line 2", "three coordinates"]),
+                ("missing_vertex", "v 0 0 0\nv 1 0 0\nf 1 2 3\n", ["line 3", "vertex \"3\" of 2"]),
+                ("zero_index", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", ["vertex \"0\""]),
+                ("two_corners", "v 0 0 0\nv 1 0 0\nf 1 2\n", ["fewer than three corners"]),
+                ("not_a_number", "v 0 0 zero\n", ["\"zero\" is not a number"])):
+            with self.subTest(name=name):
+                src = self.path(name + ".obj")
+                with open(src, "w") as f:
+                    f.write(text)
+                self.assert_refused(src, ["not a readable mesh"] + words)
+
 
     def test_truncated_file(self):
         src = self.path("truncated.ply")
