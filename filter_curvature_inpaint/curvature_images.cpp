@@ -65,11 +65,14 @@ void ApssNeighbourhood(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vc
 }
 
 void BuildHoleImage(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vcg_ext::UnitBox& box,
-                    const vcg_ext::HoleRegion& region, const CurvatureImagesParams& params,
-                    HoleImage& out) {
+                    const vcg_ext::HoleRegion& region, const std::vector<int>& new_vertices,
+                    const CurvatureImagesParams& params, HoleImage& out) {
   out.rings = region.rings;
   out.target_rings = region.target_rings;
   out.patch = vcg_ext::ExtractPatch(m, region, box);
+  const std::unordered_set<int> added(new_vertices.begin(), new_vertices.end());
+  out.is_new.resize(out.patch.vertices.size());
+  for (size_t v = 0; v < out.is_new.size(); ++v) out.is_new[v] = added.count(out.patch.vertices[v]);
   const auto context_faces = std::count(out.patch.is_fill.begin(), out.patch.is_fill.end(), 0);
   if (context_faces == 0 || out.patch.boundary.size() < 4) {
     out.problem = "there is no room for context around it (it touches another hole or the "
@@ -88,14 +91,10 @@ void BuildHoleImage(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vcg_e
   for (size_t i = 0; i < query.size(); ++i) query[i] = int(i);
   out.curvature = vcg_ext::ApssMeanCurvature(points, normals, query, params.apss);
 
-  // Normalize by the known ring: the vertices not inside the hole's fill.
-  std::vector<char> inside(out.patch.points.size(), 1);
-  for (size_t f = 0; f < out.patch.triangles.size(); ++f)
-    if (!out.patch.is_fill[f])
-      for (int v : out.patch.triangles[f]) inside[v] = 0;
+  // Normalize by the known ring: the scan's own vertices.
   std::vector<double> known;
   for (size_t v = 0; v < out.curvature.size(); ++v)
-    if (!inside[v] && std::isfinite(out.curvature[v])) known.push_back(out.curvature[v]);
+    if (!out.is_new[v] && std::isfinite(out.curvature[v])) known.push_back(out.curvature[v]);
   out.low = Percentile(known, params.low_percentile);
   out.high = Percentile(known, params.high_percentile);
   out.scale = std::max({std::abs(out.low), std::abs(out.high), 1e-9});
@@ -117,8 +116,23 @@ void BuildHoleImage(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vcg_e
 
 } // namespace
 
+void CheckCurvatureImagesParams(const CurvatureImagesParams& p) {
+  using vcg_ext::RequireRange;
+  vcg_ext::CheckCoarseFillParams(p.coarse);
+  RequireRange(p.segmentation.context, 0.05, 100, "the context around each hole");
+  RequireRange(p.segmentation.max_rings, 1, 1000, "the largest patch (rings)");
+  RequireRange(p.apss.filter_scale, 1, 100, "the APSS filter scale");
+  RequireRange(p.apss.max_projection_iterations, 1, 1000, "the APSS projection iterations");
+  RequireRange(p.apss.projection_accuracy, 1e-9, 1, "the APSS projection accuracy");
+  RequireRange(p.image_size, 16, 8192, "the image size (pixels)");
+  RequireRange(p.apss_rings, 0, 16, "the rings supporting the curvature fits");
+  RequireRange(p.low_percentile, 0, 1, "the low curvature percentile");
+  RequireRange(p.high_percentile, p.low_percentile, 1, "the high curvature percentile");
+}
+
 CurvatureImagesResult ComputeCurvatureImages(CMeshO& m, const CurvatureImagesParams& params,
                                              vcg::CallBackPos* cb, const HoleImageSink& sink) {
+  CheckCurvatureImagesParams(params);
   CurvatureImagesResult result;
   MeshCheckpoint checkpoint(m);
   result.coarse = CoarseFill(m, params.coarse, cb);
@@ -146,7 +160,8 @@ CurvatureImagesResult ComputeCurvatureImages(CMeshO& m, const CurvatureImagesPar
           const auto t0 = Clock::now();
           HoleImage& hi = result.holes[i];
           hi.hole = index[i];
-          BuildHoleImage(m, vf, result.coarse.box, regions[i], params, hi);
+          BuildHoleImage(m, vf, result.coarse.box, regions[i],
+                         result.coarse.holes[index[i]].new_vertices, params, hi);
           hi.seconds = seg_each + std::chrono::duration<double>(Clock::now() - t0).count();
           if (sink) sink(result.coarse, i, hi);
         },

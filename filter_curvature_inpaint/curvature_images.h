@@ -32,6 +32,10 @@ struct CurvatureImagesParams {
 struct HoleImage {
   int hole = 0; ///< index into CurvatureImagesResult::coarse.holes
   vcg_ext::PatchMesh patch;
+  /// Per patch vertex: added by the coarse fill, so the deformation may move it. Every other
+  /// vertex is the scan's, also a loop vertex that no context face touches (where two holes
+  /// meet at one vertex).
+  std::vector<char> is_new;
   std::vector<double> curvature; ///< signed mean curvature per patch vertex (unit box)
   std::vector<double> value;     ///< colour-map value in [0,1] per patch vertex
   double scale = 1;              ///< curvature that maps to the ends of the colour map
@@ -49,6 +53,9 @@ struct CurvatureImagesResult {
   double adjacency_seconds = 0; ///< the one pass over the mesh all holes share
 };
 
+/// Throws vcg_ext::InvalidParameterError naming the first parameter out of its range.
+void CheckCurvatureImagesParams(const CurvatureImagesParams& params);
+
 /// Receives hole k's image as soon as it is built, with the coarse fill it belongs to, on the
 /// thread that built it (holes in any order, several at once; it may throw, which stops the
 /// rest): a caller that uses each image and drops it never holds them all at the same time.
@@ -57,7 +64,8 @@ using HoleImageSink =
 
 /// Fills the holes of `m` (stages 0-2), then builds every filled hole's image, hands it to
 /// `sink` if given, and colours the patch vertices with their curvature colours. Throws
-/// vcg_ext::InvalidMeshError, CancelledError or what `sink` throws, with `m` exactly as it was.
+/// vcg_ext::InvalidMeshError, InvalidParameterError, CancelledError or what `sink` throws, with
+/// `m` exactly as it was.
 CurvatureImagesResult ComputeCurvatureImages(CMeshO& m, const CurvatureImagesParams& params,
                                              vcg::CallBackPos* cb = nullptr,
                                              const HoleImageSink& sink = {});

@@ -34,8 +34,8 @@ void AddPaperModeParams(RichParameterList& par) {
 
 void ReadDeformationParams(const RichParameterList& par, curvature_inpaint::HoleFillParams& p) {
   p.mode = par.getEnum("Mode") == 1 ? "paper" : "direct";
-  p.paper.similitude = std::max(0.0f, par.getFloat("Similitude"));
-  p.paper.transformation_constant = std::max(0.0f, par.getFloat("TransformationConstant"));
+  p.paper.similitude = par.getFloat("Similitude");
+  p.paper.transformation_constant = par.getFloat("TransformationConstant");
 }
 
 } // namespace
@@ -271,10 +271,10 @@ bool FilterCurvatureInpaintPlugin::applyFilter(QAction* action, MeshDocument& md
       return false;
     }
     ReadDeformationParams(par, p);
-    p.images.coarse.max_hole_edges = std::max(0, par.getInt("MaxHoleSize"));
-    p.images.segmentation.context = std::max(0.05f, par.getFloat("Context"));
-    p.images.apss.filter_scale = std::max(1.0f, par.getFloat("FilterScale"));
-    p.images.image_size = std::max(16, std::min(8192, par.getInt("ImageSize")));
+    p.images.coarse.max_hole_edges = par.getInt("MaxHoleSize");
+    p.images.segmentation.context = par.getFloat("Context");
+    p.images.apss.filter_scale = par.getFloat("FilterScale");
+    p.images.image_size = par.getInt("ImageSize");
     return runHoleFill(*md.mm(), p, cb);
   }
   }
@@ -284,12 +284,12 @@ bool FilterCurvatureInpaintPlugin::applyFilter(QAction* action, MeshDocument& md
 bool FilterCurvatureInpaintPlugin::applyCoarseHoleFill(MeshModel& mm, const RichParameterList& par,
                                                        vcg::CallBackPos* cb) {
   vcg_ext::CoarseFillParams params;
-  params.max_hole_edges = std::max(0, par.getInt("MaxHoleSize"));
+  params.max_hole_edges = par.getInt("MaxHoleSize");
   params.keep_longest_open = par.getBool("KeepLongestOpen");
   params.selected_only = par.getBool("Selected");
   params.refine = par.getBool("Refine");
   params.fair = par.getBool("Fair");
-  params.dp_max_edges = std::max(3, par.getInt("LiepaMaxEdges"));
+  params.dp_max_edges = par.getInt("LiepaMaxEdges");
   params.select_new_faces = par.getBool("NewFaceSelected");
   try {
     const vcg_ext::CoarseFillResult result = curvature_inpaint::CoarseFill(mm.cm, params, cb);
@@ -306,10 +306,10 @@ bool FilterCurvatureInpaintPlugin::applyCoarseHoleFill(MeshModel& mm, const Rich
 bool FilterCurvatureInpaintPlugin::applyCurvatureImages(MeshModel& mm, const RichParameterList& par,
                                                         vcg::CallBackPos* cb) {
   curvature_inpaint::CurvatureImagesParams params;
-  params.coarse.max_hole_edges = std::max(0, par.getInt("MaxHoleSize"));
-  params.segmentation.context = std::max(0.05f, par.getFloat("Context"));
-  params.apss.filter_scale = std::max(1.0f, par.getFloat("FilterScale"));
-  params.image_size = std::max(16, std::min(8192, par.getInt("ImageSize")));
+  params.coarse.max_hole_edges = par.getInt("MaxHoleSize");
+  params.segmentation.context = par.getFloat("Context");
+  params.apss.filter_scale = par.getFloat("FilterScale");
+  params.image_size = par.getInt("ImageSize");
   const std::string folder = par.getString("OutputFolder").trimmed().toStdString();
   // Refuse an unusable folder before the mesh is touched.
   if (!folder.empty() && (!QDir().mkpath(QString::fromStdString(folder)) ||
@@ -344,13 +344,13 @@ bool FilterCurvatureInpaintPlugin::applyHoleFill(MeshModel& mm, const RichParame
   p.inpaint.url = par.getString("ServerUrl").trimmed().toStdString();
   p.inpaint.model = par.getString("Model").trimmed().toStdString();
   p.inpaint.prompt = par.getString("Prompt").toStdString();
-  p.inpaint.variations = std::max(1, std::min(10, par.getInt("Variations")));
-  p.pick = std::max(0, par.getInt("Variation"));
+  p.inpaint.variations = par.getInt("Variations");
+  p.pick = par.getInt("Variation");
   ReadDeformationParams(par, p);
-  p.images.coarse.max_hole_edges = std::max(0, par.getInt("MaxHoleSize"));
+  p.images.coarse.max_hole_edges = par.getInt("MaxHoleSize");
   p.images.coarse.keep_longest_open = par.getBool("KeepLongestOpen");
   p.images.coarse.selected_only = par.getBool("Selected");
-  p.images.image_size = std::max(16, std::min(4096, par.getInt("ImageSize")));
+  p.images.image_size = par.getInt("ImageSize");
   p.images_dir = par.getString("OutputFolder").trimmed().toStdString();
   return runHoleFill(mm, p, cb);
 }

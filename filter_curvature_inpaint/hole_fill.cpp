@@ -139,15 +139,6 @@ InpaintParams WithCancel(const HoleFillParams& params, vcg::CallBackPos* cb, con
   return inpaint;
 }
 
-/// The patch's vertices inside the hole's fill: those the deformation may move.
-std::vector<char> FreeVertices(const vcg_ext::PatchMesh& patch) {
-  std::vector<char> free(patch.points.size(), 1);
-  for (size_t f = 0; f < patch.triangles.size(); ++f)
-    if (!patch.is_fill[f])
-      for (int v : patch.triangles[f]) free[v] = 0;
-  return free;
-}
-
 /// The curvature of the deformed patch as an image, normalized like the coarse one.
 QImage FinalCurvatureImage(const HoleImage& hi, const std::vector<Eigen::Vector3d>& points,
                            const vcg_ext::ApssParams& apss) {
@@ -219,7 +210,7 @@ void DeformHole(const HoleImage& hi, size_t k, const vcg_ext::CoarseFillResult& 
   const QImage& target_image = hv.variations[report.pick - 1];
 
   const auto t = Clock::now();
-  const std::vector<char> free = FreeVertices(hi.patch);
+  const std::vector<char>& free = hi.is_new;
   std::vector<double> target(hi.patch.points.size(), 0.5);
   for (size_t i = 0; i < target.size(); ++i)
     if (free[i]) target[i] = SampleValue(target_image, hi.uv.uv[i]);
@@ -278,6 +269,7 @@ void InpaintAgain(HoleVariations& hole, const InpaintParams& params) {
 
 std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& params,
                                          vcg::CallBackPos* cb) {
+  CheckHoleFillParams(params);
   CurvatureImagesParams ip = params.images;
   ip.color_vertices = false;
   const CurvatureImagesResult images = ComputeCurvatureImages(scratch, ip, cb);
@@ -340,10 +332,22 @@ double ScoreVariation(const QImage& variation, const QImage& mask) {
   return -(continuity + palette / hole_pixels / 255.0 + 0.5 * outside / hole_pixels);
 }
 
+void CheckHoleFillParams(const HoleFillParams& p) {
+  using vcg_ext::RequireRange;
+  if (p.mode != "direct" && p.mode != "paper")
+    throw vcg_ext::InvalidParameterError("unknown mode \"" + p.mode + "\" (direct or paper)");
+  CheckCurvatureImagesParams(p.images);
+  CheckInpaintParams(p.inpaint);
+  RequireRange(p.pick, 0, 10, "the variation to use");
+  RequireRange(p.direct.iterations, 1, 100, "the deformation solves");
+  RequireRange(p.paper.similitude, 0, 255, "the similitude");
+  RequireRange(p.paper.transformation_constant, 0, 1, "the transformation constant");
+  RequireRange(p.paper.max_iterations, 1, 100000, "the deformation steps");
+}
+
 HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackPos* cb,
                          const std::vector<HoleVariations>* chosen) {
-  if (params.mode != "direct" && params.mode != "paper")
-    throw std::runtime_error("unknown mode \"" + params.mode + "\" (direct or paper)");
+  CheckHoleFillParams(params);
   if (!params.images_dir.empty() && !QDir().mkpath(QString::fromStdString(params.images_dir)))
     throw std::runtime_error("cannot create " + params.images_dir);
   MeshCheckpoint checkpoint(m);
@@ -421,7 +425,7 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
       HoleWork& w = work.at(int(k));
       result.holes.push_back(w.report);
       if (w.points.empty()) continue;
-      const std::vector<char> free = FreeVertices(hi.patch);
+      const std::vector<char>& free = hi.is_new;
       for (size_t i = 0; i < w.points.size(); ++i)
         if (free[i])
           m.vert[hi.patch.vertices[i]].P() = result.coarse.box.FromUnit<Scalarm>(w.points[i]);

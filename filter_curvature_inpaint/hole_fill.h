@@ -55,10 +55,14 @@ struct HoleFillResult {
   std::vector<HoleFillReport> holes;
 };
 
+/// Throws vcg_ext::InvalidParameterError naming the first parameter out of its range.
+void CheckHoleFillParams(const HoleFillParams& params);
+
 /// Fills the holes of `m` with detail. With `chosen` (from InpaintHoles on a copy of `m` with
 /// the same parameters, picks possibly changed) the backend is not asked again: each hole is
 /// deformed to its chosen variation, or keeps its coarse fill where the pick is 0. Throws
-/// InvalidMeshError, InpaintError (a backend failed), CancelledError or std::runtime_error
+/// InvalidMeshError, InvalidParameterError (before anything else), InpaintError (a backend
+/// failed), CancelledError or std::runtime_error
 /// (also when `chosen` does not match the holes), with `m` exactly as it was.
 HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackPos* cb = nullptr,
                          const std::vector<HoleVariations>* chosen = nullptr);

@@ -4,12 +4,14 @@
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/normal.h>
 #include <wrap/io_trimesh/export.h>
-#include <wrap/io_trimesh/import.h>
+#include <wrap/io_trimesh/io_mask.h>
 
 #include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
+#include <cctype>
+#include <cmath>
 #include <cstring>
 #include <iterator>
 #include <fstream>
@@ -43,37 +45,58 @@ std::string Excerpt(const std::string& text, size_t max) {
   return out;
 }
 
-/// Whether a header line holds a control character (a tab aside), which vcglib's PLY header
-/// parser, working on C strings, does not survive.
+/// Whether a header line holds a control character (a tab aside): no PLY writer puts one
+/// there, and they would garble the messages that quote the header.
 bool HasControlCharacter(const std::string& line) {
   return std::any_of(line.begin(), line.end(), [](char c) {
     return (static_cast<unsigned char>(c) < 32 && c != '\t') || c == 127;
   });
 }
 
-/// Checks a PLY header before vcglib's reader sees it: that reader dereferences missing
-/// tokens (an "element" line without a count crashes it) and allocates whatever count a
-/// header declares. Returns why the header is refused, or "" when it is sound.
-std::string PlyHeaderProblem(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  in.seekg(0, std::ios::end);
-  const long long file_size = in.tellg();
-  in.seekg(0);
-  static const std::map<std::string, int> kSizes{
-      {"char", 1},  {"uchar", 1},   {"int8", 1},   {"uint8", 1},  {"short", 2}, {"ushort", 2},
-      {"int16", 2}, {"uint16", 2},  {"int", 4},    {"uint", 4},   {"int32", 4}, {"uint32", 4},
-      {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
-  std::string line;
-  long long header_bytes = 0, min_body = 0, element_min = 0, element_count = 0;
-  bool binary = false, format = false;
-  int lines = 0;
-  auto close_element = [&] { min_body += element_count * std::max<long long>(element_min, 1); };
-  while (std::getline(in, line)) {
-    header_bytes += (long long)line.size() + 1;
-    if (++lines > 10000 || header_bytes > (1 << 20)) return "a PLY header of over 1 MB";
+struct PlyProperty {
+  std::string name;
+  int size = 0; ///< bytes of a (binary) value
+  bool is_float = false, is_signed = false;
+  bool list = false; ///< a count (count_* fields) then that many values
+  int count_size = 0;
+  bool count_signed = false;
+};
+
+struct PlyElement {
+  std::string name;
+  long long count = 0;
+  std::vector<PlyProperty> properties;
+};
+
+struct PlyHeader {
+  bool binary = false, big_endian = false;
+  size_t body = 0; ///< offset of the first byte after end_header's line
+  std::vector<PlyElement> elements;
+};
+
+/// Parses and checks a PLY header: every element with a count, every property with a known
+/// type, and no more data declared than the file holds. Returns why it is refused, or "".
+std::string ParsePlyHeader(const std::string& data, PlyHeader& header) {
+  struct Type {
+    int size;
+    bool is_float, is_signed;
+  };
+  static const std::map<std::string, Type> kTypes{
+      {"char", {1, false, true}},   {"uchar", {1, false, false}},  {"int8", {1, false, true}},
+      {"uint8", {1, false, false}}, {"short", {2, false, true}},   {"ushort", {2, false, false}},
+      {"int16", {2, false, true}},  {"uint16", {2, false, false}}, {"int", {4, false, true}},
+      {"uint", {4, false, false}},  {"int32", {4, false, true}},   {"uint32", {4, false, false}},
+      {"float", {4, true, true}},   {"float32", {4, true, true}},  {"double", {8, true, true}},
+      {"float64", {8, true, true}}};
+  size_t at = 0;
+  bool format = false;
+  for (int lines = 1;; ++lines) {
+    const size_t end = data.find('\n', at);
+    if (end == std::string::npos || end > (1u << 20) || lines > 10000)
+      return "a PLY header without end_header in its first megabyte";
+    std::string line = data.substr(at, end - at);
+    at = end + 1;
     if (!line.empty() && line.back() == '\r') line.pop_back();
-    // vcglib reads the header as C strings in fixed buffers.
-    if (line.size() > 500) return "a PLY header line of over 500 characters";
     if (HasControlCharacter(line)) return "a control character in the PLY header";
     std::istringstream words(line);
     std::string word;
@@ -86,39 +109,230 @@ std::string PlyHeaderProblem(const std::string& path) {
       std::string kind;
       words >> kind;
       if (kind != "ascii" && kind != "binary_little_endian" && kind != "binary_big_endian")
-        return "an unknown PLY format \"" + kind + "\"";
-      binary = kind != "ascii";
+        return "an unknown PLY format \"" + Excerpt(kind, 40) + "\"";
+      header.binary = kind != "ascii";
+      header.big_endian = kind == "binary_big_endian";
       format = true;
     } else if (word == "element") {
-      std::string name, count;
-      words >> name >> count;
-      if (name.empty() || count.empty() ||
+      PlyElement e;
+      std::string count;
+      words >> e.name >> count;
+      if (e.name.empty() || count.empty() ||
           count.find_first_not_of("0123456789") != std::string::npos || count.size() > 12)
         return "a PLY element without a valid count: \"" + Excerpt(line, 80) + "\"";
-      close_element();
-      element_count = std::stoll(count);
-      element_min = 0;
+      e.count = std::stoll(count);
+      header.elements.push_back(e);
     } else if (word == "property") {
-      std::string type, a, b;
-      words >> type >> a >> b;
+      if (header.elements.empty()) return "a PLY property before any element";
+      PlyProperty prop;
+      std::string type;
+      words >> type;
       if (type == "list") {
-        if (!kSizes.count(a) || !kSizes.count(b) || !(words >> word))
+        std::string count_type;
+        words >> count_type >> type;
+        const auto c = kTypes.find(count_type);
+        if (c == kTypes.end() || c->second.is_float)
           return "a malformed PLY list property: \"" + Excerpt(line, 80) + "\"";
-        element_min += binary ? kSizes.at(a) : 2;
-      } else {
-        if (!kSizes.count(type) || a.empty())
-          return "a malformed PLY property: \"" + Excerpt(line, 80) + "\"";
-        element_min += binary ? kSizes.at(type) : 2;
+        prop.list = true;
+        prop.count_size = c->second.size;
+        prop.count_signed = c->second.is_signed;
       }
+      const auto t = kTypes.find(type);
+      if (t == kTypes.end() || !(words >> prop.name))
+        return "a malformed PLY property: \"" + Excerpt(line, 80) + "\"";
+      prop.size = t->second.size;
+      prop.is_float = t->second.is_float;
+      prop.is_signed = t->second.is_signed;
+      header.elements.back().properties.push_back(prop);
     } else if (word == "end_header") {
-      close_element();
       if (!format) return "a PLY header without a format line";
-      if (min_body > file_size - header_bytes)
+      header.body = at;
+      // The least each element can take: a list at least its count; ASCII two bytes a value.
+      long double least = 0;
+      for (const auto& e : header.elements) {
+        long double row = 0;
+        for (const auto& prop : e.properties)
+          row += header.binary ? (prop.list ? prop.count_size : prop.size) : 2;
+        least += e.count * std::max<long double>(row, 1);
+      }
+      if (least > (long double)(data.size() - at))
         return "a PLY header that declares more data than the file holds";
       return "";
+    } else if (word != "comment" && word != "obj_info" && !word.empty()) {
+      return "an unknown PLY header line \"" + Excerpt(line, 80) + "\"";
     }
   }
-  return "a PLY header without end_header";
+}
+
+/// Reads the values of a PLY body, ASCII or binary, in either byte order.
+class PlyBody {
+public:
+  PlyBody(const std::string& data, const PlyHeader& header)
+      : data_(data), at_(header.body), binary_(header.binary), swap_(header.big_endian) {}
+  /// The next value of a property (or a list count), as a double; false at the file's end or
+  /// on a word that is not a number.
+  bool Read(int size, bool is_float, bool is_signed, double& value) {
+    if (!binary_) {
+      while (at_ < data_.size() && std::isspace(static_cast<unsigned char>(data_[at_]))) ++at_;
+      const size_t start = at_;
+      while (at_ < data_.size() && !std::isspace(static_cast<unsigned char>(data_[at_]))) ++at_;
+      if (start == at_ || at_ - start > 64) return false;
+      const std::string word = data_.substr(start, at_ - start);
+      char* end = nullptr;
+      value = std::strtod(word.c_str(), &end);
+      return *end == '\0';
+    }
+    if (size > int(data_.size() - at_)) return false;
+    unsigned char b[8];
+    std::memcpy(b, data_.data() + at_, size_t(size));
+    at_ += size_t(size);
+    if (swap_) std::reverse(b, b + size);
+    if (is_float) {
+      if (size == 4) {
+        float f;
+        std::memcpy(&f, b, 4);
+        value = f;
+      } else {
+        std::memcpy(&value, b, 8);
+      }
+      return true;
+    }
+    uint64_t u = 0;
+    std::memcpy(&u, b, size_t(size)); // little-endian host
+    if (is_signed && size < 8 && (u >> (8 * size - 1)) & 1) u |= ~uint64_t(0) << (8 * size);
+    value = is_signed ? double(int64_t(u)) : double(u);
+    return true;
+  }
+
+private:
+  const std::string& data_;
+  size_t at_;
+  bool binary_, swap_;
+};
+
+/// Reads a PLY file into `m`: vertex positions, normals, colours and quality; faces (lists of
+/// any length, fanned into triangles), their colours and MeshLab's selection flag; every other
+/// element and property is skipped. vcglib's PLY reader reads a polygon's corners before it
+/// checks them (a heap overflow on a malformed file), so the product reads PLY itself.
+/// Returns the vcglib mask of what the file holds. Throws MeshIoError.
+int ReadPly(const std::string& path, CMeshO& m) {
+  using Mask = vcg::tri::io::Mask;
+  std::ifstream in(path, std::ios::binary);
+  const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  auto fail = [&](const std::string& why) {
+    throw MeshIoError(path + ": not a readable mesh (" + why + ")");
+  };
+  PlyHeader header;
+  const std::string problem = ParsePlyHeader(data, header);
+  if (!problem.empty()) fail(problem);
+  PlyBody body(data, header);
+  auto read = [&](const PlyProperty& prop, const std::string& element, long long row) {
+    double v = 0;
+    if (!body.Read(prop.size, prop.is_float, prop.is_signed, v))
+      fail("the " + element + " " + std::to_string(row) + " is cut short or not a number");
+    return v;
+  };
+  auto read_count = [&](const PlyProperty& prop, const std::string& element, long long row) {
+    double n = 0;
+    if (!body.Read(prop.count_size, false, prop.count_signed, n) || !(n >= 0 && n <= 1e6) ||
+        n != std::floor(n))
+      fail("the " + element + " " + std::to_string(row) + " has no valid list length");
+    return int(n);
+  };
+  auto color = [](const PlyProperty& prop, double v) {
+    const double c = prop.is_float ? 255 * v : v;
+    return (unsigned char)std::lround(std::max(0.0, std::min(255.0, c == c ? c : 0.0)));
+  };
+
+  int mask = Mask::IOM_VERTCOORD | Mask::IOM_FACEINDEX;
+  struct Vertex {
+    Point3m p, n;
+    vcg::Color4b c = vcg::Color4b(vcg::Color4b::White);
+    float q = 0;
+  };
+  struct Triangle {
+    std::array<int, 3> v;
+    vcg::Color4b c = vcg::Color4b(vcg::Color4b::White);
+    bool selected = false;
+  };
+  std::vector<Vertex> vertices;
+  std::vector<Triangle> triangles;
+  bool have_vertices = false;
+  for (const PlyElement& e : header.elements) {
+    const bool is_vertex = e.name == "vertex" && !have_vertices;
+    const bool is_face = e.name == "face";
+    if (is_vertex) {
+      have_vertices = true;
+      vertices.resize(size_t(e.count));
+    }
+    for (long long row = 0; row < e.count; ++row) {
+      Triangle face;
+      std::vector<int> corners;
+      for (const PlyProperty& prop : e.properties) {
+        const std::string& n = prop.name;
+        if (prop.list) {
+          const int count = read_count(prop, e.name, row);
+          const bool indices = is_face && (n == "vertex_indices" || n == "vertex_index");
+          for (int k = 0; k < count; ++k) {
+            const double v = read(prop, e.name, row);
+            if (!indices) continue;
+            if (!(v >= 0 && v < double(vertices.size())) || v != std::floor(v))
+              fail("face " + std::to_string(row) + " names a vertex that does not exist");
+            corners.push_back(int(v));
+          }
+          if (indices && count < 3)
+            fail("face " + std::to_string(row) + " has fewer than three corners");
+          continue;
+        }
+        const double v = read(prop, e.name, row);
+        if (is_vertex) {
+          Vertex& vx = vertices[size_t(row)];
+          if (n == "x" || n == "y" || n == "z") {
+            vx.p[n[0] - 'x'] = Scalarm(v);
+          } else if (n == "nx" || n == "ny" || n == "nz") {
+            vx.n[n[1] - 'x'] = Scalarm(v), mask |= Mask::IOM_VERTNORMAL;
+          } else if (n == "red" || n == "green" || n == "blue" || n == "alpha") {
+            vx.c[n == "red" ? 0 : n == "green" ? 1 : n == "blue" ? 2 : 3] = color(prop, v);
+            mask |= Mask::IOM_VERTCOLOR;
+          } else if (n == "quality") {
+            vx.q = float(v), mask |= Mask::IOM_VERTQUALITY;
+          }
+        } else if (is_face) {
+          if (n == "red" || n == "green" || n == "blue" || n == "alpha") {
+            face.c[n == "red" ? 0 : n == "green" ? 1 : n == "blue" ? 2 : 3] = color(prop, v);
+            mask |= Mask::IOM_FACECOLOR;
+          } else if (n == "flags") {
+            face.selected = (int64_t(v) & CFaceO::SELECTED) != 0;
+            mask |= Mask::IOM_FACEFLAGS;
+          }
+        }
+      }
+      if (!is_face) continue;
+      if (corners.empty()) fail("the faces have no vertex_indices");
+      for (size_t k = 1; k + 1 < corners.size(); ++k) {
+        face.v = {corners[0], corners[k], corners[k + 1]};
+        triangles.push_back(face);
+      }
+    }
+  }
+  m.Clear();
+  if (mask & Mask::IOM_FACECOLOR) m.face.EnableColor();
+  auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, vertices.size());
+  for (const Vertex& v : vertices) {
+    vi->P() = v.p;
+    vi->N() = v.n;
+    vi->C() = v.c;
+    vi->Q() = v.q;
+    ++vi;
+  }
+  auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, triangles.size());
+  for (const Triangle& t : triangles) {
+    for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[t.v[k]];
+    if (mask & Mask::IOM_FACECOLOR) fi->C() = t.c;
+    if (t.selected) fi->SetS();
+    ++fi;
+  }
+  return mask;
 }
 
 /// Reads an STL file, binary or ASCII, into `m` (a triangle soup, welded by the caller).
@@ -306,69 +520,32 @@ void ReadObj(const std::string& path, CMeshO& m, bool& has_color) {
 } // namespace
 
 int LoadMesh(const std::string& path, CMeshO& m) {
-  using Importer = vcg::tri::io::Importer<CMeshO>;
-  using Mask = vcg::tri::io::Mask;
   const std::string ext = Extension(path);
   if (!Supported(ext))
     throw MeshIoError(path + ": unsupported format \"" + ext + "\" (use .ply, .off, .obj or .stl)");
   if (!std::ifstream(path).good()) throw MeshIoError(path + ": cannot open the file");
-  const std::string problem = ext == "ply" ? PlyHeaderProblem(path) : "";
-  if (!problem.empty()) throw MeshIoError(path + ": not a readable mesh (" + problem + ")");
-  if (ext == "obj") {
+  int mask = vcg::tri::io::Mask::IOM_VERTCOORD | vcg::tri::io::Mask::IOM_FACEINDEX;
+  if (ext == "ply") {
+    mask = ReadPly(path, m);
+  } else if (ext == "obj") {
     bool has_color = false;
     ReadObj(path, m, has_color);
-    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
-    vcg::tri::UpdateBounding<CMeshO>::Box(m);
-    return vcg::tri::io::Mask::IOM_VERTCOORD | vcg::tri::io::Mask::IOM_FACEINDEX |
-           (has_color ? int(vcg::tri::io::Mask::IOM_VERTCOLOR) : 0);
-  }
-  if (ext == "off") {
+    if (has_color) mask |= vcg::tri::io::Mask::IOM_VERTCOLOR;
+  } else if (ext == "off") {
     ReadOff(path, m);
-    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
-    vcg::tri::UpdateBounding<CMeshO>::Box(m);
-    return vcg::tri::io::Mask::IOM_VERTCOORD | vcg::tri::io::Mask::IOM_FACEINDEX;
-  }
-  if (ext == "stl") {
+  } else {
     ReadStl(path, m);
     // STL stores each triangle with its own corners: weld them, as MeshLab does on import,
     // or every triangle would be a hole of its own.
     vcg::tri::Clean<CMeshO>::RemoveDuplicateVertex(m);
     vcg::tri::Allocator<CMeshO>::CompactEveryVector(m);
-    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
-    vcg::tri::UpdateBounding<CMeshO>::Box(m);
-    return vcg::tri::io::Mask::IOM_VERTCOORD | vcg::tri::io::Mask::IOM_FACEINDEX;
   }
-  int mask = 0;
-  Importer::LoadMask(path.c_str(), mask);
-  m.Clear();
-  // MeshLab's mesh keeps some attributes optional: enable those the file carries.
-  if (mask & Mask::IOM_FACECOLOR) m.face.EnableColor();
-  if (mask & Mask::IOM_FACEQUALITY) m.face.EnableQuality();
-  if (mask & Mask::IOM_WEDGTEXCOORD) m.face.EnableWedgeTexCoord();
-  if (mask & Mask::IOM_VERTTEXCOORD) m.vert.EnableTexCoord();
-  if (mask & Mask::IOM_VERTRADIUS) m.vert.EnableRadius();
-  int loaded = mask;
-  const int err = Importer::Open(m, path.c_str(), loaded);
-  if (err != 0 && Importer::ErrorCritical(err)) {
-    const std::string why = Importer::ErrorMsg(err);
-    m.Clear();
-    throw MeshIoError(path + ": not a readable mesh (" + why + ")");
-  }
-  // Whatever vcglib's PLY reader missed, a face must name vertices that exist.
-  const CVertexO* first = m.vert.empty() ? nullptr : &m.vert.front();
-  for (const auto& f : m.face)
-    for (int k = 0; k < 3; ++k)
-      if (!first || f.cV(k) < first || f.cV(k) >= first + m.vert.size()) {
-        m.Clear();
-        throw MeshIoError(path +
-                          ": not a readable mesh (a face names a vertex that does not exist)");
-      }
-  if (!(loaded & Mask::IOM_VERTNORMAL))
-    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
-  else
+  if (mask & vcg::tri::io::Mask::IOM_VERTNORMAL)
     vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
+  else
+    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
   vcg::tri::UpdateBounding<CMeshO>::Box(m);
-  return loaded;
+  return mask;
 }
 
 void SaveMesh(const std::string& path, CMeshO& m, int mask) {

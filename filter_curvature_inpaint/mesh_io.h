@@ -1,7 +1,7 @@
 // Reading and writing meshes outside MeshLab (PLY, OFF, OBJ, STL), for the command-line tool.
-// PLY is read by vcglib after a check of its header; OFF, OBJ and STL by the product's own
-// readers, since vcglib's fail on malformed files; all are written by vcglib. MeshLab's own
-// I/O plugins do this inside the GUI and meshlabserver.
+// The product reads all four itself, since vcglib's readers crash, hang or overrun their
+// buffers on malformed files (found by fuzz/fuzz_mesh_file.cpp); vcglib writes them. MeshLab's
+// own I/O plugins do this inside the GUI and meshlabserver.
 #pragma once
 
 #include <common/ml_mesh_type.h>

@@ -23,13 +23,13 @@ cmake -S "$root" -B "$root/build-fuzz" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DCURVATURE_INPAINT_FUZZ=ON -DBUILD_TESTING=OFF >/dev/null
-cmake --build "$root/build-fuzz" -j2 --target fuzz_backend_responses fuzz_coarse_fill fuzz_mesh_file
+cmake --build "$root/build-fuzz" -j2 --target fuzz_backend_responses fuzz_coarse_fill fuzz_filter_parameters fuzz_mesh_file
 # Any allocation far beyond what an input of 64 kB can justify fails as std::bad_alloc, which
 # the product reports as an error, instead of exhausting the machine.
 export ASAN_OPTIONS=detect_leaks=0:allocator_may_return_null=1:max_allocation_size_mb=2048
 export UBSAN_OPTIONS=print_stacktrace=1
 cd "$root/build-fuzz"
-for target in fuzz_backend_responses fuzz_coarse_fill fuzz_mesh_file; do
+for target in fuzz_backend_responses fuzz_coarse_fill fuzz_filter_parameters fuzz_mesh_file; do
   # A deterministic run starts from the shipped seeds alone.
   if [ "$fresh" = 1 ]; then rm -rf "corpus/$target"; fi
   mkdir -p "corpus/$target"

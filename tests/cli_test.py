@@ -155,6 +155,145 @@ class CoarseFill(TempDirTest):
             colours = [line.split()[4:7] for line in f if line.startswith("v ")]
         self.assertEqual(colours[3], ["1.000000", "1.000000", "0.000000"])
 
+def relief(n):
+    """grid(n) bent into gentle waves, so curvature images show something."""
+    v, f = grid(n)
+    return [(x, y, 0.08 * math.sin(5 * x) * math.cos(4 * y)) for x, y, _ in v], f
+
+
+def box(size, cell):
+    """The closed surface of the box [0, sx] x [0, sy] x [0, sz], triangles facing out, edges
+    about `cell` long (at least one per side)."""
+    vertices, index, faces = [], {}, []
+
+    def vertex(p):
+        key = tuple(round(c, 9) for c in p)
+        if key not in index:
+            index[key] = len(vertices)
+            vertices.append(key)
+        return index[key]
+
+    for axis in range(3):
+        a, b = (axis + 1) % 3, (axis + 2) % 3
+        na, nb = max(1, round(size[a] / cell)), max(1, round(size[b] / cell))
+        for side in (0, 1):
+            def corner(i, j):
+                p = [0.0, 0.0, 0.0]
+                p[axis], p[a], p[b] = size[axis] * side, size[a] * i / na, size[b] * j / nb
+                return vertex(p)
+            for i in range(na):
+                for j in range(nb):
+                    q = (corner(i, j), corner(i + 1, j), corner(i + 1, j + 1), corner(i, j + 1))
+                    if side:
+                        faces += [(q[0], q[1], q[2]), (q[0], q[2], q[3])]
+                    else:
+                        faces += [(q[0], q[2], q[1]), (q[0], q[3], q[2])]
+    return vertices, faces
+
+
+def read_off_vertices(path):
+    with open(path) as f:
+        words = f.read().split()
+    assert words[0] == "OFF", words[0]
+    nv = int(words[1])
+    return [tuple(float(c) for c in words[4 + 3 * i: 7 + 3 * i]) for i in range(nv)]
+
+
+class HoleShapes(TempDirTest):
+    """The whole method (`fill`) on the hole shapes scans bring: each has a defined outcome."""
+
+    def fill(self, src, *options):
+        """Runs fill to OFF and checks what holds for every shape: exit 0, manifold, no vertex
+        of the input moved (only the fill's own vertices are deformed). Returns (info, report)."""
+        out, report = self.path("out.off"), self.path("report.json")
+        r = run([TOOL, "fill", src, out, "--size", "256", "--report", report, *options])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        after = info(out)
+        self.assertEqual(after["non_manifold_edges"], 0)
+        self.assertEqual(after["inconsistent_edges"], 0)
+        before = read_off_vertices(self.to_off(src))
+        for p, q in zip(before, read_off_vertices(out)):
+            self.assertLess(max(abs(a - b) for a, b in zip(p, q)), 1e-5)
+        with open(report) as f:
+            return after, json.load(f)
+
+    def to_off(self, src):
+        off = self.path("in.off")
+        self.assertEqual(run([TOOL, "coarse", src, off, "--max-hole-edges", "1"]).returncode, 0)
+        return off
+
+    def assert_detailed(self, report, holes):
+        self.assertEqual(len(report["holes"]), holes)
+        for h in report["holes"]:
+            self.assertGreaterEqual(h["pick"], 1, h)
+            self.assertNotIn("problem", h)
+
+    def test_holes_sharing_a_vertex(self):
+        # Two square holes touching at one corner: the vertex where they meet is on both
+        # loops. Each loop is filled on its own (the log marks them pinched) and gets detail.
+        n = 30
+        v, f = relief(n)
+        cell = lambda k: divmod(k // 2, n)  # noqa: E731
+        hole = lambda r, c: 8 <= r < 12 and 8 <= c < 12 or 12 <= r < 16 and 12 <= c < 16  # noqa: E731
+        src = self.path("touching.ply")
+        write_ascii_ply(src, v, [t for k, t in enumerate(f) if not hole(*cell(k))])
+        self.assertEqual(sorted(info(src)["hole_edges"]), [16, 16, 120])
+        after, report = self.fill(src, "--keep-longest-open")
+        self.assertEqual(after["hole_edges"], [120])  # the border alone
+        self.assert_detailed(report, 2)
+
+    def test_holes_facing_each_other_across_a_thin_plate(self):
+        # A plate 0.03 thick with a hole of radius 0.1 on each side, 0.02 from the rim: a patch
+        # of one hole's radius around either would wrap over the rim into the other. The
+        # patches grow in step and stop where they meet: they share no vertex, both get detail.
+        v, f = box((1.0, 1.0, 0.03), 1 / 48)
+
+        def in_hole(t):
+            c = [sum(v[i][k] for i in t) / 3 for k in range(3)]
+            on_face = abs(c[2]) < 1e-9 or abs(c[2] - 0.03) < 1e-9
+            return on_face and (c[0] - 0.88) ** 2 + (c[1] - 0.5) ** 2 < 0.1 ** 2
+        src = self.path("plate.ply")
+        write_ascii_ply(src, v, [t for t in f if not in_hole(t)])
+        self.assertEqual(info(src)["hole_edges"], [38, 38])
+        images = self.path("images")
+        r = run([TOOL, "images", src, images, "--size", "256"])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        patches = []
+        for k in (1, 2):
+            with open(os.path.join(images, f"hole_{k}.json")) as f:
+                patches.append({p["index"] for p in json.load(f)["vertices"]})
+        self.assertEqual(patches[0] & patches[1], set())
+        after, report = self.fill(src)
+        self.assertEqual(after["holes"], 0)
+        self.assert_detailed(report, 2)
+
+    def test_island_inside_a_hole(self):
+        # The island's border and the hole's are separate loops; both are closed, the island
+        # ends up part of the surface.
+        v, f = relief(20)
+        cell = lambda k: divmod(k // 2, 20)  # noqa: E731
+        hole = [k for k in range(len(f)) if 5 <= cell(k)[0] <= 14 and 5 <= cell(k)[1] <= 14]
+        island = [k for k in hole if 9 <= cell(k)[0] <= 10 and 9 <= cell(k)[1] <= 10]
+        src = self.path("island.ply")
+        write_ascii_ply(src, v, [t for k, t in enumerate(f) if k not in hole or k in island])
+        self.assertEqual(sorted(info(src)["hole_edges"]), [8, 40, 80])
+        after, report = self.fill(src, "--keep-longest-open")
+        self.assertEqual(after["hole_edges"], [80])
+        self.assertEqual(len(report["holes"]), 2)
+
+    def test_hole_beside_a_handle(self):
+        # The rocker arm has genus one; a hole punched by its bore is filled with detail and
+        # the handle survives (Euler characteristic 0 before and after).
+        src = self.path("rocker_holed.ply")
+        r = run([TOOL, "punch", os.path.join(SHARED_MESHES, "rocker_arm.ply"), src,
+                 "--seed-vertex", "100", "--radius-frac", "0.04"])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        after, report = self.fill(src)
+        self.assertEqual(after["holes"], 0)
+        self.assertEqual(after["vertices"] - after["faces"] // 2, 0)  # V - E + F = V - F / 2
+        self.assert_detailed(report, 1)
+
+
 class CurvatureImages(TempDirTest):
     def test_images_of_every_hole_and_a_montage(self):
         out = self.path("images")
@@ -246,7 +385,50 @@ class BadInput(TempDirTest):
         f[5] = (0, 1, 9999)
         src = self.path("oob.ply")
         write_ascii_ply(src, v, f)
-        self.assert_refused(src, ["not a readable mesh", "vertex index"])
+        self.assert_refused(src, ["not a readable mesh", "face 5 names a vertex that does not exist"])
+
+    def test_ply_as_exporters_write_it(self):
+        # Binary big-endian, double coordinates, a quad, colours as floats, MeshLab's face
+        # flags (selection), an element no reader knows: read, filled, colours kept.
+        import struct
+        src = self.path("big_endian.ply")
+        with open(src, "wb") as f:
+            f.write(b"ply\nformat binary_big_endian 1.0\ncomment from a scanner\n"
+                    b"element vertex 5\nproperty double x\nproperty double y\nproperty double z\n"
+                    b"property float red\nproperty float green\nproperty float blue\n"
+                    b"element face 2\nproperty list uchar uint vertex_indices\nproperty int flags\n"
+                    b"element camera 1\nproperty list ushort float view\n"
+                    b"end_header\n")
+            for p in ((0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0.5, 2, 0)):
+                f.write(struct.pack(">3d3f", *p, 0.0, 1.0, 0.5))
+            f.write(struct.pack(">B4Ii", 4, 0, 1, 2, 3, 0x20))
+            f.write(struct.pack(">B3Ii", 3, 3, 2, 4, 0))
+            f.write(struct.pack(">H2f", 2, 1.0, 2.0))
+        before = info(src)
+        self.assertEqual((before["vertices"], before["faces"], before["hole_edges"]), (5, 3, [5]))
+        out = self.path("filled.ply")
+        r = run([TOOL, "coarse", src, out, "--selected-only"])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(info(out)["holes"], 0)  # the hole borders the selected quad
+        r = run([TOOL, "coarse", src, self.path("filled.off")])
+        self.assertEqual(r.returncode, 0, r.stderr)
+
+    def test_malformed_ply(self):
+        head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n" \
+               "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+        body = "0 0 0\n1 0 0\n0 1 0\n"
+        for name, text, words in (
+                ("polygon_past_the_end", head + body + "4 0 1 2 7\n", ["face 0 names a vertex"]),
+                ("two_corners", head + body + "2 0 1\n", ["fewer than three corners"]),
+                ("cut_short", head + body + "3 0 1\n", ["face 0 is cut short"]),
+                ("word", head + "0 0 zero\n1 0 0\n0 1 0\n3 0 1 2\n", ["vertex 0 is cut short or not a number"]),
+                ("no_count", "ply\nformat ascii 1.0\nelement vertex\nend_header\n", ["without a valid count"]),
+                ("unknown_type", head.replace("float z", "quad z") + body, ["malformed PLY property"])):
+            with self.subTest(name=name):
+                src = self.path(name + ".ply")
+                with open(src, "w") as f:
+                    f.write(text)
+                self.assert_refused(src, ["not a readable mesh"] + words)
 
     def test_unwelded_triangle_soup(self):
         # Each triangle with its own corners: every edge looks like a hole. Refused, not doubled.

@@ -40,6 +40,35 @@ class ApssFace : public vcg::Face<ApssTypes, vcg::face::VertexRef> {};
 class ApssMesh
     : public vcg::tri::TriMesh<vcg::vertex::vector_ocf<ApssVertex>, std::vector<ApssFace>> {};
 
+/// MeshLab's APSS builds a ball tree on its first query and never frees it (MlsSurface's
+/// destructor is empty and BallTree has none): this one frees the tree and its nodes.
+template <class MeshType>
+class Apss : public GaelMls::APSS<MeshType> {
+public:
+  explicit Apss(const MeshType& m) : GaelMls::APSS<MeshType>(m) {}
+  ~Apss() override {
+    Tree*& tree = static_cast<Surface&>(*this).*TreeOf::Member();
+    if (!tree) return;
+    delete ((*tree).*RootOf::Member()); // a node deletes its children
+    delete tree;
+    tree = nullptr;
+  }
+  Apss(const Apss&) = delete;
+  Apss& operator=(const Apss&) = delete;
+
+private:
+  using Surface = GaelMls::MlsSurface<MeshType>;
+  using Tree = GaelMls::BallTree<typename MeshType::ScalarType>;
+  // Both pointers are protected (APSS even hides the tree as private): reached through
+  // pointers to members named in classes derived from their owners.
+  struct TreeOf : Surface {
+    static Tree* Surface::*Member() { return &TreeOf::mBallTree; }
+  };
+  struct RootOf : Tree {
+    static typename Tree::Node* Tree::*Member() { return &RootOf::mRootNode; }
+  };
+};
+
 } // namespace detail
 
 /// Mean curvature at points[query[i]] of the APSS surface through `points` with `normals`
@@ -56,7 +85,7 @@ inline std::vector<double> ApssMeanCurvature(const std::vector<Eigen::Vector3d>&
         vcg::Point3f(float(normals[i].x()), float(normals[i].y()), float(normals[i].z()));
   }
   vcg::tri::UpdateBounding<detail::ApssMesh>::Box(m);
-  GaelMls::APSS<detail::ApssMesh> apss(m);
+  detail::Apss<detail::ApssMesh> apss(m);
   apss.setFilterScale(params.filter_scale);
   apss.setMaxProjectionIters(params.max_projection_iterations);
   apss.setProjectionAccuracy(params.projection_accuracy);

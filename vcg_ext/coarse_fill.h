@@ -45,6 +45,16 @@ struct CoarseFillParams {
   int threads = 0;              ///< holes filled at once; 0: one per core
 };
 
+/// Throws InvalidParameterError naming the first parameter out of its range.
+inline void CheckCoarseFillParams(const CoarseFillParams& p) {
+  RequireRange(p.max_hole_edges, 0, 1e9, "the maximum hole size (edges)");
+  RequireRange(p.max_hole_diameter, 0, 1e9, "the maximum hole diameter");
+  // Liepa's triangulation is cubic in the loop's length: beyond this it would take minutes.
+  RequireRange(p.dp_max_edges, 3, 1000, "the largest hole for the optimal triangulation");
+  RequireRange(p.density_alpha, 0.1, 10, "the refinement density");
+  RequireRange(p.threads, 0, 1024, "the thread count");
+}
+
 struct HoleFillReport {
   int boundary_edges = 0;
   bool pinched = false; ///< the loop was split at a non-manifold vertex
@@ -307,7 +317,8 @@ void ApplyPatches(MeshType& m, const std::vector<HoleLoop>& loops,
 /// Fills the holes of `m` (stages 0-2 of the pipeline).
 ///
 /// Preconditions, checked before anything is written (InvalidMeshError otherwise): at least
-/// one face, finite coordinates, every edge shared by at most two faces.
+/// one face, finite coordinates, every edge shared by at most two faces; parameters in their
+/// ranges (InvalidParameterError otherwise).
 /// Loops are split at pinch vertices. Holes that cannot be closed without a non-manifold edge
 /// stay open and say why in their report. Existing vertices and faces keep their positions and
 /// attributes; new vertices interpolate colour and quality. `cb` receives progress; returning
@@ -315,6 +326,7 @@ void ApplyPatches(MeshType& m, const std::vector<HoleLoop>& loops,
 template <class MeshType>
 CoarseFillResult CoarseFill(MeshType& m, const CoarseFillParams& params = {},
                             vcg::CallBackPos* cb = nullptr) {
+  CheckCoarseFillParams(params);
   const EdgeCensus census = ValidateForHoleFilling(m);
   HoleLoopParams lp;
   lp.max_edges = params.max_hole_edges;

@@ -1,5 +1,7 @@
 #include "inpainter.h"
 
+#include <vcg_ext/mesh_errors.h>
+
 #include <QBuffer>
 #include <QByteArray>
 #include <QFile>
@@ -410,11 +412,28 @@ std::string DefaultPrompt(const std::string& backend) {
   return kDiffusionPrompt;
 }
 
+void CheckInpaintParams(const InpaintParams& p) {
+  using vcg_ext::RequireRange;
+  const auto& names = InpaintBackends();
+  if (std::find(names.begin(), names.end(), p.backend) == names.end())
+    throw vcg_ext::InvalidParameterError("unknown backend \"" + p.backend +
+                                         "\" (embedded, openai, sd-webui, stability, comfyui)");
+  RequireRange(p.variations, 1, 10, "the number of variations");
+  RequireRange(p.size, 0, 4096, "the service's image size (pixels)");
+  RequireRange(p.detail, 0, 10, "the embedded inpainter's detail");
+  RequireRange(p.http.connect_timeout_s, 0.001, 86400, "the connection timeout (s)");
+  RequireRange(p.http.total_timeout_s, 0.001, 86400, "the timeout (s)");
+  RequireRange(double(p.http.max_response_bytes), 1, 1e12, "the largest answer (bytes)");
+  RequireRange(p.http.max_retries, 0, 100, "the number of retries");
+  RequireRange(p.http.backoff_s, 0, 3600, "the wait before a retry (s)");
+  RequireRange(p.http.max_wait_s, 0, 86400, "the longest wait for a retry (s)");
+}
+
 std::vector<QImage> Inpaint(const QImage& image, const QImage& mask, const InpaintParams& p) {
   const std::string& b = p.backend;
+  CheckInpaintParams(p);
   if (image.isNull() || mask.isNull() || image.size() != mask.size())
     throw InpaintError(b + ": the image and the mask must be images of the same size");
-  if (p.variations < 1 || p.variations > 10) throw InpaintError(b + ": ask for 1 to 10 variations");
   std::vector<QImage> raw;
   if (b == "embedded")
     raw = InpaintEmbedded(image, mask, p);

@@ -38,6 +38,10 @@ public:
   explicit InpaintError(const std::string& what) : std::runtime_error(what) {}
 };
 
+/// Throws vcg_ext::InvalidParameterError naming the first parameter out of its range, or an
+/// unknown backend.
+void CheckInpaintParams(const InpaintParams& params);
+
 /// The backends this build knows.
 const std::vector<std::string>& InpaintBackends();
 
