@@ -26,7 +26,8 @@ using curvature_inpaint::HoleFillDialog;
 
 namespace {
 
-template <typename W> W* Find(const QWidget& dialog, const char* name) {
+template <typename W>
+W* Find(const QWidget& dialog, const char* name) {
   W* w = dialog.findChild<W*>(name);
   if (!w) qFatal("no widget %s", name);
   return w;
@@ -145,9 +146,8 @@ private slots:
     for (const auto& hole : d.Holes()) {
       QVERIFY(hole.problem.empty());
       QCOMPARE(int(hole.variations.size()), 3);
-      const int best = int(std::max_element(hole.scores.begin(), hole.scores.end()) -
-                           hole.scores.begin()) +
-                       1;
+      const int best =
+          int(std::max_element(hole.scores.begin(), hole.scores.end()) - hole.scores.begin()) + 1;
       QCOMPARE(hole.pick, best);
     }
     QVERIFY(d.windowTitle().contains("3 of 3 holes ready"));
@@ -184,6 +184,18 @@ private slots:
     QTRY_VERIFY_WITH_TIMEOUT(!d.Busy(), 120000);
     QVERIFY(d.Holes()[0].variations[0] != before);
     QVERIFY(d.Holes()[1].variations[0] == other);
+  }
+
+  void a_field_that_is_not_a_number_is_named() {
+    HoleFillDialog d(mesh_);
+    d.show();
+    Find<QLineEdit>(d, "transformationConstant")->setText("fast");
+    Find<QPushButton>(d, "inpaint")->click();
+    QTRY_VERIFY_WITH_TIMEOUT(!d.Busy(), 60000);
+    QVERIFY(d.Holes().empty());
+    QVERIFY2(Find<QLabel>(d, "status")->text().contains("the transformation constant must be"),
+             qPrintable(Find<QLabel>(d, "status")->text()));
+    QVERIFY(!Find<QPushButton>(d, "apply")->isEnabled());
   }
 
   void cancel_stops_a_network_call_and_then_closes() {

@@ -123,6 +123,30 @@ class MeshlabServer(TempDirTest):
         self.assertIn("cannot write to the output folder", r.stdout + r.stderr)
         self.assertFalse(os.path.exists(out))
 
+    def test_parameters_out_of_range_are_refused_by_name(self):
+        # A script may carry any value: an image size of 0 or a context of "nan" is refused
+        # with the parameter's name and range, and nothing is written.
+        src = self.punched("nefertiti.ply", 33416, 0.03)
+        digest = sha256(src)
+        for name, old, new, words in (
+                ("curvature_inpaint_hole_fill.mlx", 'name="ImageSize" value="512"', 'name="ImageSize" value="0"',
+                 "the image size (pixels) must be from 16 to 8192"),
+                ("curvature_inpaint_curvature_images.mlx", 'name="Context" value="1"', 'name="Context" value="nan"',
+                 "the context around each hole must be from 0.05 to 100")):
+            with self.subTest(script=name):
+                with open(os.path.join(SCRIPTS, name)) as f:
+                    script = f.read()
+                self.assertIn(old, script)
+                edited = self.path("edited_" + name)
+                with open(edited, "w") as f:
+                    f.write(script.replace(old, new))
+                out = self.path("out.ply")
+                r = self.meshlabserver(src, out, edited)
+                self.assertNotEqual(r.returncode, 0)
+                self.assertIn(words, r.stdout + r.stderr)
+                self.assertFalse(os.path.exists(out))
+                self.assertEqual(sha256(src), digest)
+
     def test_refused_mesh_is_reported_and_not_written(self):
         src = write_non_manifold_ply(self.path("nonmanifold.ply"))
         digest = sha256(src)

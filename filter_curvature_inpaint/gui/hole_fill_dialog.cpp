@@ -23,6 +23,7 @@
 #include <QVBoxLayout>
 
 #include <cstdlib>
+#include <limits>
 
 namespace curvature_inpaint {
 
@@ -216,7 +217,8 @@ HoleFillParams HoleFillDialog::Params() const {
   p.paper.similitude = similitude_->value();
   bool ok = false;
   const double tc = transformation_constant_->text().toDouble(&ok);
-  if (ok && tc > 0) p.paper.transformation_constant = tc;
+  // Text that is not a number reaches the parameter check, which names the field.
+  p.paper.transformation_constant = ok ? tc : std::numeric_limits<double>::quiet_NaN();
   p.mode = mode_->currentText().toStdString();
   p.images.coarse.max_hole_edges = max_hole_edges_->value();
   p.images.coarse.selected_only = selected_only_->isChecked();
