@@ -91,10 +91,16 @@ void BuildHoleImage(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vcg_e
   for (size_t i = 0; i < query.size(); ++i) query[i] = int(i);
   out.curvature = vcg_ext::ApssMeanCurvature(points, normals, query, params.apss);
 
-  // Normalize by the known ring: the scan's own vertices.
+  // Normalize by the known ring: the vertices of the scan's faces in the patch. A loop vertex
+  // with none (where two holes meet at one vertex) is the scan's too, but its fits straddle
+  // both fills: its curvature would stretch the scale.
+  std::vector<char> on_scan(out.patch.points.size(), 0);
+  for (size_t f = 0; f < out.patch.triangles.size(); ++f)
+    if (!out.patch.is_fill[f])
+      for (int v : out.patch.triangles[f]) on_scan[v] = 1;
   std::vector<double> known;
   for (size_t v = 0; v < out.curvature.size(); ++v)
-    if (!out.is_new[v] && std::isfinite(out.curvature[v])) known.push_back(out.curvature[v]);
+    if (on_scan[v] && std::isfinite(out.curvature[v])) known.push_back(out.curvature[v]);
   out.low = Percentile(known, params.low_percentile);
   out.high = Percentile(known, params.high_percentile);
   out.scale = std::max({std::abs(out.low), std::abs(out.high), 1e-9});

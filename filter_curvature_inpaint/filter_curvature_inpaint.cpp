@@ -147,7 +147,7 @@ void FilterCurvatureInpaintPlugin::initParameterSet(QAction* action, MeshModel&,
                          "Optimal triangulation up to (edges)",
                          "Holes up to this many boundary edges get Liepa's minimum-weight "
                          "triangulation, which takes cubic time; larger holes use vcglib's "
-                         "ear cutting, which is fast on holes of any size."));
+                         "ear cutting, which is fast on holes of any size. 3 to 1000."));
     par.addParam(RichBool("NewFaceSelected", true, "Select the newly created faces",
                           "Afterwards the selection is exactly the faces that fill the holes."));
     break;

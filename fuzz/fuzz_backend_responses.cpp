@@ -2,9 +2,8 @@
 // base64, PNG decoding, sizes, ComfyUI's multi-step exchange), with the network replaced by
 // the fuzzer's bytes. Input: a backend selector, a status selector, then the bodies of the
 // successive answers, separated by lines "----" (the last one repeats).
+#include "fuzz_input.h"
 #include "inpaint/inpainter.h"
-
-#include <QGuiApplication>
 
 #include <cstdint>
 #include <cstdlib>
@@ -16,8 +15,7 @@ using namespace curvature_inpaint;
 extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
   setenv("OPENAI_API_KEY", "sk-fuzz-0000000000", 1);
   setenv("STABILITY_API_KEY", "sk-fuzz-0000000000", 1);
-  setenv("QT_QPA_PLATFORM", "offscreen", 1);
-  static QGuiApplication app(*argc, *argv); // QImage's PNG plugin needs an application
+  fuzz::StartQt(argc, argv);
   return 0;
 }
 

@@ -3,10 +3,9 @@
 // through the coarse fill and, for some inputs, the whole method with the embedded inpainter.
 // Refusals (InvalidMeshError) are fine; a crash, a non-manifold result from a manifold input,
 // or a mesh changed by a refused fill are not.
+#include "fuzz_input.h"
 #include "hole_fill.h"
 #include "pipeline.h"
-
-#include <QGuiApplication>
 
 #include <cmath>
 #include <cstdint>
@@ -16,23 +15,12 @@
 using namespace curvature_inpaint;
 
 extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
-  setenv("QT_QPA_PLATFORM", "offscreen", 1);
-  static QGuiApplication app(*argc, *argv);
+  fuzz::StartQt(argc, argv);
   return 0;
 }
 
-namespace {
-
-struct Bytes {
-  const uint8_t* data;
-  size_t size, at = 0;
-  uint8_t Next() { return at < size ? data[at++] : 0; }
-};
-
-} // namespace
-
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  Bytes in{data, size};
+  fuzz::Input in{data, size};
   const int n = 3 + in.Next() % 8;
   const uint8_t flags = in.Next();
   CMeshO m;

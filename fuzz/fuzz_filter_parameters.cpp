@@ -5,10 +5,9 @@
 // InvalidParameterError before the mesh is touched; any other outcome must leave the mesh as
 // it was on failure, or filled and manifold on success. Valid sizes stay small (images of at
 // most 64 pixels, a few dozen steps) so that each input runs in well under a second.
+#include "fuzz_input.h"
 #include "hole_fill.h"
 #include "pipeline.h"
-
-#include <QGuiApplication>
 
 #include <climits>
 #include <cmath>
@@ -19,17 +18,14 @@
 using namespace curvature_inpaint;
 
 extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
-  setenv("QT_QPA_PLATFORM", "offscreen", 1);
-  static QGuiApplication app(*argc, *argv);
+  fuzz::StartQt(argc, argv);
   return 0;
 }
 
 namespace {
 
-struct Choices {
-  const uint8_t* data;
-  size_t size, at = 0;
-  uint8_t Next() { return at < size ? data[at++] : 0; }
+/// Parameter values: each choice picks one of a few that matter.
+struct Choices : fuzz::Input {
   int Int() {
     static const int kValues[] = {INT_MIN, -1, 0, 1, 2, 3, 7, 16, 64, 1001, 100001, INT_MAX};
     return kValues[Next() % (sizeof kValues / sizeof *kValues)];
@@ -89,7 +85,7 @@ std::vector<Point3m> Positions(const CMeshO& m) {
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  Choices in{data, size};
+  Choices in{{data, size}};
   HoleFillParams p;
   p.mode = in.Text({"direct", "paper", "", "Direct"});
   p.pick = in.Int();

@@ -11,8 +11,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size < 1) return 0;
   static const char* const kExtensions[] = {"ply", "off", "obj", "stl"};
-  const std::string path = "/tmp/curvature-inpaint-fuzz-" + std::to_string(getpid()) + "." +
-                           kExtensions[data[0] % 4];
+  const std::string path =
+      "/tmp/curvature-inpaint-fuzz-" + std::to_string(getpid()) + "." + kExtensions[data[0] % 4];
   std::FILE* f = std::fopen(path.c_str(), "wb");
   if (!f) return 0;
   std::fwrite(data + 1, 1, size - 1, f);
