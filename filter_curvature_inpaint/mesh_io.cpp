@@ -335,6 +335,19 @@ int ReadPly(const std::string& path, CMeshO& m) {
   return mask;
 }
 
+/// Replaces `m` by these vertices and triangles (indices into `points`, checked by the reader).
+void SetMesh(CMeshO& m, const std::vector<Point3m>& points,
+             const std::vector<std::array<int, 3>>& triangles) {
+  m.Clear();
+  auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, points.size());
+  for (const auto& p : points) (vi++)->P() = p;
+  auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, triangles.size());
+  for (const auto& t : triangles) {
+    for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[t[k]];
+    ++fi;
+  }
+}
+
 /// Reads an STL file, binary or ASCII, into `m` (a triangle soup, welded by the caller).
 /// vcglib's ASCII reader loops forever on a file without a line break, so the product reads
 /// STL itself. Throws MeshIoError.
@@ -366,13 +379,10 @@ void ReadStl(const std::string& path, CMeshO& m) {
     if (corners.size() % 3 != 0)
       throw MeshIoError(path + ": not a readable mesh (vertices not in threes)");
   }
-  m.Clear();
-  if (corners.empty()) return;
-  auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, corners.size());
-  auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, corners.size() / 3);
-  for (size_t c = 0; c < corners.size(); ++c, ++vi) vi->P() = corners[c];
-  for (size_t t = 0; t < corners.size() / 3; ++t, ++fi)
-    for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[3 * t + k];
+  std::vector<std::array<int, 3>> triangles(corners.size() / 3);
+  for (size_t t = 0; t < triangles.size(); ++t)
+    triangles[t] = {int(3 * t), int(3 * t + 1), int(3 * t + 2)};
+  SetMesh(m, corners, triangles);
 }
 
 /// Reads an OFF file (OFF, COFF, NOFF, STOFF and their combinations; positions and faces,
@@ -430,14 +440,7 @@ void ReadOff(const std::string& path, CMeshO& m) {
     for (long long k = 1; k + 1 < corners; ++k)
       triangles.push_back({index[0], index[size_t(k)], index[size_t(k + 1)]});
   }
-  m.Clear();
-  auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, points.size());
-  for (const auto& p : points) (vi++)->P() = p;
-  auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, triangles.size());
-  for (const auto& t : triangles) {
-    for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[t[k]];
-    ++fi;
-  }
+  SetMesh(m, points, triangles);
 }
 
 /// Reads an OBJ file's geometry into `m`: vertices ("v x y z", optionally with "r g b" in
@@ -504,17 +507,9 @@ void ReadObj(const std::string& path, CMeshO& m, bool& has_color) {
     }
   }
   has_color = !points.empty() && colors.size() == points.size();
-  m.Clear();
-  auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, points.size());
-  for (size_t v = 0; v < points.size(); ++v, ++vi) {
-    vi->P() = points[v];
-    if (has_color) vi->C() = colors[v];
-  }
-  auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, triangles.size());
-  for (const auto& t : triangles) {
-    for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[t[k]];
-    ++fi;
-  }
+  SetMesh(m, points, triangles);
+  if (has_color)
+    for (size_t v = 0; v < colors.size(); ++v) m.vert[v].C() = colors[v];
 }
 
 } // namespace

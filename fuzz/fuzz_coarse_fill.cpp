@@ -43,11 +43,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     faces.push_back({int(in.Next() % m.vert.size()), int(in.Next() % m.vert.size()),
                      int(in.Next() % m.vert.size())});
   if (faces.empty()) return 0;
-  auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, faces.size());
-  for (const auto& t : faces) {
-    for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[t[k]];
-    ++fi;
-  }
+  fuzz::AddTriangles(m, faces);
   vcg::tri::UpdateBounding<CMeshO>::Box(m);
   vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
 

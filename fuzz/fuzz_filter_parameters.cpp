@@ -26,6 +26,7 @@ namespace {
 
 /// Parameter values: each choice picks one of a few that matter.
 struct Choices : fuzz::Input {
+  Choices(const uint8_t* data, size_t size) : fuzz::Input{data, size} {}
   int Int() {
     static const int kValues[] = {INT_MIN, -1, 0, 1, 2, 3, 7, 16, 64, 1001, 100001, INT_MAX};
     return kValues[Next() % (sizeof kValues / sizeof *kValues)];
@@ -67,11 +68,7 @@ void WavyGridWithHoles(CMeshO& m) {
       faces.push_back({a, b, d});
       faces.push_back({a, d, c});
     }
-  auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, faces.size());
-  for (const auto& t : faces) {
-    for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[t[k]];
-    ++fi;
-  }
+  fuzz::AddTriangles(m, faces);
   vcg::tri::UpdateBounding<CMeshO>::Box(m);
   vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
 }
@@ -85,7 +82,7 @@ std::vector<Point3m> Positions(const CMeshO& m) {
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  Choices in{{data, size}};
+  Choices in(data, size);
   HoleFillParams p;
   p.mode = in.Text({"direct", "paper", "", "Direct"});
   p.pick = in.Int();

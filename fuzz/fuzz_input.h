@@ -1,8 +1,13 @@
-// What the libFuzzer targets share: the Qt application QImage needs, and the input read as a
-// sequence of one-byte choices.
+// What the libFuzzer targets share: the Qt application QImage needs, the input read as a
+// sequence of one-byte choices, and meshes built from triangle lists.
 #pragma once
 
+#include <common/ml_mesh_type.h>
+
 #include <QGuiApplication>
+
+#include <array>
+#include <vector>
 
 #include <cstddef>
 #include <cstdint>
@@ -22,5 +27,14 @@ struct Input {
   size_t size, at = 0;
   uint8_t Next() { return at < size ? data[at++] : 0; }
 };
+
+/// Appends these triangles (indices into m.vert) to `m`.
+inline void AddTriangles(CMeshO& m, const std::vector<std::array<int, 3>>& faces) {
+  auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, faces.size());
+  for (const auto& t : faces) {
+    for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[t[k]];
+    ++fi;
+  }
+}
 
 } // namespace fuzz
