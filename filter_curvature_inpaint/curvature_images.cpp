@@ -92,8 +92,8 @@ void BuildHoleImage(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vcg_e
   out.curvature = vcg_ext::ApssMeanCurvature(points, normals, query, params.apss);
 
   // Normalize by the known ring: the vertices of the scan's faces in the patch. A loop vertex
-  // with none (where two holes meet at one vertex) is the scan's too, but its fits straddle
-  // both fills: its curvature would stretch the scale.
+  // with none (where two holes meet at one vertex) is the scan's too, but no scan surface
+  // around it in this patch backs its curvature.
   std::vector<char> on_scan(out.patch.points.size(), 0);
   for (size_t f = 0; f < out.patch.triangles.size(); ++f)
     if (!out.patch.is_fill[f])
