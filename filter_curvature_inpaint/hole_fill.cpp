@@ -16,9 +16,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <map>
 #include <mutex>
-#include <cstdio>
 #include <sstream>
 
 namespace curvature_inpaint {
@@ -366,10 +366,8 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
   const InpaintParams inpaint = WithCancel(params, local ? nullptr : cb, &progress);
   struct HoleWork {
     HoleFillReport report;
-    HoleVariations hv;
     std::vector<Eigen::Vector3d> points; ///< the deformed patch; empty: keep the coarse fill
-    QImage final_image;
-    QImage montage_row; ///< when the images are written
+    QImage montage_row;                  ///< when the images are written
   };
   std::map<int, HoleWork> work; // by hole; nodes stay put while other threads insert
   std::mutex work_mutex;
@@ -383,19 +381,19 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
       std::lock_guard<std::mutex> lock(work_mutex);
       w = &work[k];
     }
-    DeformHole(hi, size_t(k), coarse, params, inpaint, chosen, w->report, w->hv, w->points,
-               w->final_image);
+    HoleVariations hv;
+    QImage final_image;
+    DeformHole(hi, size_t(k), coarse, params, inpaint, chosen, w->report, hv, w->points,
+               final_image);
     if (!params.images_dir.empty() && !w->points.empty()) {
       const std::string base = params.images_dir + "/hole_" + std::to_string(k + 1);
-      SavePng(w->hv.image, base + "_coarse.png");
-      SavePng(w->hv.mask, base + "_mask.png");
-      for (size_t j = 0; j < w->hv.variations.size(); ++j)
-        SavePng(w->hv.variations[j], base + "_variation_" + std::to_string(j + 1) + ".png");
-      SavePng(w->final_image, base + "_final.png");
-      w->montage_row = MontageRow(w->hv, w->report.pick, w->final_image);
+      SavePng(hv.image, base + "_coarse.png");
+      SavePng(hv.mask, base + "_mask.png");
+      for (size_t j = 0; j < hv.variations.size(); ++j)
+        SavePng(hv.variations[j], base + "_variation_" + std::to_string(j + 1) + ".png");
+      SavePng(final_image, base + "_final.png");
+      w->montage_row = MontageRow(hv, w->report.pick, final_image);
     }
-    w->hv = HoleVariations();
-    w->final_image = QImage();
     std::vector<uint8_t>().swap(hi.image.rgb);
     std::vector<uint8_t>().swap(hi.image.hole);
   };

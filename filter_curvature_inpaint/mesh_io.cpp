@@ -257,7 +257,26 @@ int ReadPly(const std::string& path, CMeshO& m) {
   };
   std::vector<Vertex> vertices;
   std::vector<Triangle> triangles;
+  // What each property is for, decided once per element rather than once per value.
+  enum Kind { kSkip, kPosition, kNormal, kColor, kQuality, kCorners, kFlags };
+  struct Use {
+    Kind kind;
+    int channel; ///< x/y/z or r/g/b/a
+  };
+  auto use_of = [](const PlyProperty& prop, bool is_vertex, bool is_face) -> Use {
+    const std::string& n = prop.name;
+    const int rgba = n == "red" ? 0 : n == "green" ? 1 : n == "blue" ? 2 : n == "alpha" ? 3 : -1;
+    if (prop.list)
+      return {is_face && (n == "vertex_indices" || n == "vertex_index") ? kCorners : kSkip, 0};
+    if (is_vertex && (n == "x" || n == "y" || n == "z")) return {kPosition, n[0] - 'x'};
+    if (is_vertex && (n == "nx" || n == "ny" || n == "nz")) return {kNormal, n[1] - 'x'};
+    if ((is_vertex || is_face) && rgba >= 0) return {kColor, rgba};
+    if (is_vertex && n == "quality") return {kQuality, 0};
+    if (is_face && n == "flags") return {kFlags, 0};
+    return {kSkip, 0};
+  };
   bool have_vertices = false;
+  std::vector<int> corners;
   for (const PlyElement& e : header.elements) {
     const bool is_vertex = e.name == "vertex" && !have_vertices;
     const bool is_face = e.name == "face";
@@ -265,46 +284,66 @@ int ReadPly(const std::string& path, CMeshO& m) {
       have_vertices = true;
       vertices.resize(size_t(e.count));
     }
+    std::vector<Use> uses;
+    for (const PlyProperty& prop : e.properties) {
+      uses.push_back(use_of(prop, is_vertex, is_face));
+      if (e.count == 0) continue;
+      switch (uses.back().kind) {
+      case kNormal:
+        mask |= Mask::IOM_VERTNORMAL;
+        break;
+      case kColor:
+        mask |= is_vertex ? Mask::IOM_VERTCOLOR : Mask::IOM_FACECOLOR;
+        break;
+      case kQuality:
+        mask |= Mask::IOM_VERTQUALITY;
+        break;
+      case kFlags:
+        mask |= Mask::IOM_FACEFLAGS;
+        break;
+      default:
+        break;
+      }
+    }
     for (long long row = 0; row < e.count; ++row) {
       Triangle face;
-      std::vector<int> corners;
-      for (const PlyProperty& prop : e.properties) {
-        const std::string& n = prop.name;
+      corners.clear();
+      for (size_t i = 0; i < e.properties.size(); ++i) {
+        const PlyProperty& prop = e.properties[i];
+        const Use use = uses[i];
         if (prop.list) {
           const int count = read_count(prop, e.name, row);
-          const bool indices = is_face && (n == "vertex_indices" || n == "vertex_index");
           for (int k = 0; k < count; ++k) {
             const double v = read(prop, e.name, row);
-            if (!indices) continue;
+            if (use.kind != kCorners) continue;
             if (!(v >= 0 && v < double(vertices.size())) || v != std::floor(v))
               fail("face " + std::to_string(row) + " names a vertex that does not exist");
             corners.push_back(int(v));
           }
-          if (indices && count < 3)
+          if (use.kind == kCorners && count < 3)
             fail("face " + std::to_string(row) + " has fewer than three corners");
           continue;
         }
         const double v = read(prop, e.name, row);
-        if (is_vertex) {
-          Vertex& vx = vertices[size_t(row)];
-          if (n == "x" || n == "y" || n == "z") {
-            vx.p[n[0] - 'x'] = Scalarm(v);
-          } else if (n == "nx" || n == "ny" || n == "nz") {
-            vx.n[n[1] - 'x'] = Scalarm(v), mask |= Mask::IOM_VERTNORMAL;
-          } else if (n == "red" || n == "green" || n == "blue" || n == "alpha") {
-            vx.c[n == "red" ? 0 : n == "green" ? 1 : n == "blue" ? 2 : 3] = color(prop, v);
-            mask |= Mask::IOM_VERTCOLOR;
-          } else if (n == "quality") {
-            vx.q = float(v), mask |= Mask::IOM_VERTQUALITY;
-          }
-        } else if (is_face) {
-          if (n == "red" || n == "green" || n == "blue" || n == "alpha") {
-            face.c[n == "red" ? 0 : n == "green" ? 1 : n == "blue" ? 2 : 3] = color(prop, v);
-            mask |= Mask::IOM_FACECOLOR;
-          } else if (n == "flags") {
-            face.selected = (int64_t(v) & CFaceO::SELECTED) != 0;
-            mask |= Mask::IOM_FACEFLAGS;
-          }
+        Vertex* vx = is_vertex ? &vertices[size_t(row)] : nullptr;
+        switch (use.kind) {
+        case kPosition:
+          vx->p[use.channel] = Scalarm(v);
+          break;
+        case kNormal:
+          vx->n[use.channel] = Scalarm(v);
+          break;
+        case kColor:
+          (vx ? vx->c : face.c)[use.channel] = color(prop, v);
+          break;
+        case kQuality:
+          vx->q = float(v);
+          break;
+        case kFlags:
+          face.selected = (int64_t(v) & CFaceO::SELECTED) != 0;
+          break;
+        default:
+          break;
         }
       }
       if (!is_face) continue;
