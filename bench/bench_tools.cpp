@@ -1,7 +1,9 @@
 // Measurement tools for the benchmark (not part of the product):
 //   bench_tools metrics GROUND_TRUTH INPUT RESULT   distances in and around the filled region
 //   bench_tools subdivide IN OUT                    one midpoint (1-to-4) subdivision
+//   bench_tools kept INPUT RESULT                   input vertices the result moved
 #include "curvature_images.h"
+#include "ground_truth_image.h"
 #include "mesh_io.h"
 #include "pipeline.h"
 
@@ -19,6 +21,8 @@
 #include <cstdlib>
 #include <cstdio>
 #include <map>
+#include <set>
+#include <array>
 #include <random>
 #include <vector>
 
@@ -105,14 +109,7 @@ double CurvatureSpread(CMeshO& from, Surface& reference, double tol) {
     points.emplace_back(v.cP()[0], v.cP()[1], v.cP()[2]);
     normals.emplace_back(v.cN()[0], v.cN()[1], v.cN()[2]);
   }
-  const std::vector<double> h = vcg_ext::ApssMeanCurvature(points, normals, query);
-  double sum = 0, sq = 0;
-  int n = 0;
-  for (double x : h)
-    if (std::isfinite(x)) sum += x, sq += x * x, ++n;
-  if (n < 2) return 0;
-  const double mean = sum / n;
-  return std::sqrt(std::max(0.0, sq / n - mean * mean));
+  return curvature_inpaint::Spread(vcg_ext::ApssMeanCurvature(points, normals, query));
 }
 
 void PrintStats(const char* name, const std::vector<double>& d, double diag) {
@@ -155,6 +152,20 @@ int Metrics(const std::string& gt_path, const std::string& input_path,
   return 0;
 }
 
+// How many vertices of INPUT are not in RESULT at exactly their coordinates: a filler must
+// leave every vertex outside its fill bit for bit as it was.
+int Kept(const std::string& input_path, const std::string& result_path) {
+  CMeshO in, out;
+  curvature_inpaint::LoadMesh(input_path, in);
+  curvature_inpaint::LoadMesh(result_path, out);
+  std::set<std::array<float, 3>> positions;
+  for (const auto& v : out.vert) positions.insert({v.cP()[0], v.cP()[1], v.cP()[2]});
+  size_t moved = 0;
+  for (const auto& v : in.vert) moved += !positions.count({v.cP()[0], v.cP()[1], v.cP()[2]});
+  std::printf("{\"moved\": %zu, \"vertices\": %zu}\n", moved, in.vert.size());
+  return 0;
+}
+
 int Subdivide(const std::string& in, const std::string& out) {
   CMeshO m;
   const int mask = curvature_inpaint::LoadMesh(in, m);
@@ -190,8 +201,7 @@ int Subdivide(const std::string& in, const std::string& out) {
 
 // The inpainting benchmark's ground truth: the curvature images of INPUT's holes (as
 // `curvature-inpaint images` makes them) and, beside each, the ideal image: the ground truth's
-// own APSS curvature carried to every coarse-patch vertex from the nearest ground-truth
-// vertex, normalized and rasterized exactly like the hole's image.
+// own curvature painted over the same patch and UV (the oracle of `fill --oracle`).
 int Ideal(const std::string& gt_path, const std::string& input_path, const std::string& dir,
           int size) {
   CMeshO gt, in;
@@ -199,48 +209,15 @@ int Ideal(const std::string& gt_path, const std::string& input_path, const std::
   curvature_inpaint::LoadMesh(input_path, in);
   curvature_inpaint::CurvatureImagesParams params;
   params.image_size = size;
+  const curvature_inpaint::GroundTruthOracle oracle(gt, in, params);
   const auto result = curvature_inpaint::ComputeCurvatureImages(in, params);
   curvature_inpaint::WriteHoleImages(dir, result);
-  const vcg_ext::UnitBox& box = result.coarse.box; // the input's units, as in its images
   for (size_t k = 0; k < result.holes.size(); ++k) {
-    const auto& hi = result.holes[k];
-    if (!hi.problem.empty()) continue;
-    Eigen::AlignedBox3d region;
-    for (const auto& p : hi.patch.points) region.extend(p);
-    const Eigen::Vector3d margin =
-        0.15 * (region.max() - region.min()) + Eigen::Vector3d::Constant(1e-3);
-    region.extend(region.min() - margin);
-    region.extend(region.max() + margin);
-    std::vector<Eigen::Vector3d> points, normals;
-    for (const auto& v : gt.vert) {
-      const Eigen::Vector3d p = box.ToUnit(v.cP());
-      if (!region.contains(p)) continue;
-      points.push_back(p);
-      normals.emplace_back(v.cN()[0], v.cN()[1], v.cN()[2]);
-    }
-    std::vector<int> nearest(hi.patch.points.size(), 0);
-    for (size_t i = 0; i < hi.patch.points.size(); ++i) {
-      double best = 1e300;
-      for (size_t j = 0; j < points.size(); ++j) {
-        const double d = (points[j] - hi.patch.points[i]).squaredNorm();
-        if (d < best) best = d, nearest[i] = int(j);
-      }
-    }
-    const std::vector<double> h = vcg_ext::ApssMeanCurvature(points, normals, nearest);
-    std::vector<double> value(h.size());
-    for (size_t i = 0; i < h.size(); ++i)
-      value[i] =
-          std::isfinite(h[i]) ? std::max(0.0, std::min(1.0, 0.5 + 0.5 * h[i] / hi.scale)) : 0.5;
-    const auto ideal =
-        vcg_ext::RasterizeCurvature(hi.uv.uv, value, hi.patch.triangles, hi.patch.is_fill, size);
-    QImage q(size, size, QImage::Format_RGB32);
-    for (int y = 0; y < size; ++y)
-      for (int x = 0; x < size; ++x) {
-        const uint8_t* c = &ideal.rgb[(size_t(y) * size + x) * 3];
-        q.setPixel(x, y, qRgb(c[0], c[1], c[2]));
-      }
+    const auto truth = oracle.Image(result.holes[k]);
+    if (!truth.problem.empty()) continue;
     const std::string path = dir + "/hole_" + std::to_string(k + 1) + "_ideal.png";
-    if (!q.save(QString::fromStdString(path))) throw std::runtime_error("cannot write " + path);
+    if (!truth.image.save(QString::fromStdString(path)))
+      throw std::runtime_error("cannot write " + path);
   }
   return 0;
 }
@@ -359,9 +336,11 @@ int main(int argc, char** argv) {
     const std::string cmd = argc > 1 ? argv[1] : "";
     if (cmd == "metrics" && argc == 5) return Metrics(argv[2], argv[3], argv[4]);
     if (cmd == "subdivide" && argc == 4) return Subdivide(argv[2], argv[3]);
+    if (cmd == "kept" && argc == 4) return Kept(argv[2], argv[3]);
     if (cmd == "append" && argc == 5) return Append(argv[2], argv[3], argv[4]);
     if (cmd == "punch-many" && argc == 7)
-      return PunchMany(argv[2], argv[3], std::stoi(argv[4]), std::stod(argv[5]), std::stod(argv[6]));
+      return PunchMany(argv[2], argv[3], std::stoi(argv[4]), std::stod(argv[5]),
+                       std::stod(argv[6]));
     if (cmd == "ideal" && argc == 6) return Ideal(argv[2], argv[3], argv[4], std::stoi(argv[5]));
     if (cmd == "render" && (argc == 8 || argc == 11))
       return Render(
@@ -370,7 +349,8 @@ int main(int argc, char** argv) {
           argc == 11 ? Point3m(std::stof(argv[8]), std::stof(argv[9]), std::stof(argv[10]))
                      : Point3m(0, 0, 0));
     std::fprintf(stderr, "usage: bench_tools metrics GT INPUT RESULT | subdivide IN OUT | "
-                         "append A B OUT | punch-many IN OUT COUNT MIN_R MAX_R | ideal GT INPUT DIR SIZE | render MESH OUT.png CX CY CZ "
+                         "append A B OUT | punch-many IN OUT COUNT MIN_R MAX_R | ideal GT INPUT "
+                         "DIR SIZE | render MESH OUT.png CX CY CZ "
                          "RADIUS [VX VY VZ]\n");
     return 2;
   } catch (const std::exception& e) {

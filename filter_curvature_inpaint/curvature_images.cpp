@@ -30,40 +30,6 @@ double Percentile(std::vector<double> v, double q) {
   return v[k];
 }
 
-/// The patch's vertices first, then `rings` rings around them, with area-weighted normals
-/// from their faces: the point set the APSS fits run on.
-void ApssNeighbourhood(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vcg_ext::UnitBox& box,
-                       const std::vector<int>& patch_vertices, int rings,
-                       std::vector<Eigen::Vector3d>& points,
-                       std::vector<Eigen::Vector3d>& normals) {
-  std::vector<int> order(patch_vertices);
-  std::unordered_set<int> in(order.begin(), order.end());
-  size_t ring_start = 0;
-  for (int r = 0; r < rings; ++r) {
-    const size_t ring_end = order.size();
-    for (size_t i = ring_start; i < ring_end; ++i)
-      vf.ForEach(order[i], [&](int f) {
-        for (int k = 0; k < 3; ++k) {
-          const int v = int(vcg::tri::Index(m, m.face[f].cV(k)));
-          if (in.insert(v).second) order.push_back(v);
-        }
-      });
-    ring_start = ring_end;
-  }
-  points.clear();
-  normals.clear();
-  for (int v : order) {
-    points.push_back(box.ToUnit(m.vert[v].cP()));
-    Eigen::Vector3d n = Eigen::Vector3d::Zero();
-    vf.ForEach(v, [&](int f) {
-      const auto& face = m.face[f];
-      n += vcg_ext::TriangleNormal(box.ToUnit(face.cV(0)->cP()), box.ToUnit(face.cV(1)->cP()),
-                                   box.ToUnit(face.cV(2)->cP()));
-    });
-    normals.push_back(n.norm() > 0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d(0, 0, 1));
-  }
-}
-
 void BuildHoleImage(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vcg_ext::UnitBox& box,
                     const vcg_ext::HoleRegion& region, const std::vector<int>& new_vertices,
                     const CurvatureImagesParams& params, HoleImage& out) {
@@ -103,7 +69,7 @@ void BuildHoleImage(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vcg_e
     if (on_scan[v] && std::isfinite(out.curvature[v])) known.push_back(out.curvature[v]);
   out.low = Percentile(known, params.low_percentile);
   out.high = Percentile(known, params.high_percentile);
-  out.scale = std::max({std::abs(out.low), std::abs(out.high), 1e-9});
+  out.scale = params.headroom * std::max({std::abs(out.low), std::abs(out.high), 1e-9});
   out.value.resize(out.curvature.size());
   for (size_t v = 0; v < out.curvature.size(); ++v)
     out.value[v] = std::isfinite(out.curvature[v])
@@ -122,6 +88,38 @@ void BuildHoleImage(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vcg_e
 
 } // namespace
 
+void ApssNeighbourhood(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vcg_ext::UnitBox& box,
+                       const std::vector<int>& patch_vertices, int rings,
+                       std::vector<Eigen::Vector3d>& points,
+                       std::vector<Eigen::Vector3d>& normals) {
+  std::vector<int> order(patch_vertices);
+  std::unordered_set<int> in(order.begin(), order.end());
+  size_t ring_start = 0;
+  for (int r = 0; r < rings; ++r) {
+    const size_t ring_end = order.size();
+    for (size_t i = ring_start; i < ring_end; ++i)
+      vf.ForEach(order[i], [&](int f) {
+        for (int k = 0; k < 3; ++k) {
+          const int v = int(vcg::tri::Index(m, m.face[f].cV(k)));
+          if (in.insert(v).second) order.push_back(v);
+        }
+      });
+    ring_start = ring_end;
+  }
+  points.clear();
+  normals.clear();
+  for (int v : order) {
+    points.push_back(box.ToUnit(m.vert[v].cP()));
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    vf.ForEach(v, [&](int f) {
+      const auto& face = m.face[f];
+      n += vcg_ext::TriangleNormal(box.ToUnit(face.cV(0)->cP()), box.ToUnit(face.cV(1)->cP()),
+                                   box.ToUnit(face.cV(2)->cP()));
+    });
+    normals.push_back(n.norm() > 0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d(0, 0, 1));
+  }
+}
+
 void CheckCurvatureImagesParams(const CurvatureImagesParams& p) {
   using vcg_ext::RequireRange;
   vcg_ext::CheckCoarseFillParams(p.coarse);
@@ -134,6 +132,7 @@ void CheckCurvatureImagesParams(const CurvatureImagesParams& p) {
   RequireRange(p.apss_rings, 0, 16, "the rings supporting the curvature fits");
   RequireRange(p.low_percentile, 0, 1, "the low curvature percentile");
   RequireRange(p.high_percentile, p.low_percentile, 1, "the high curvature percentile");
+  RequireRange(p.headroom, 1, 100, "the colour map's headroom");
 }
 
 CurvatureImagesResult ComputeCurvatureImages(CMeshO& m, const CurvatureImagesParams& params,

@@ -201,6 +201,15 @@ void FilterCurvatureInpaintPlugin::initParameterSet(QAction* action, MeshModel&,
         RichInt("Variation", 0, "Variation to use",
                 "0: the one with the best score (continuity across the hole's border, "
                 "colours on the palette, values in the surroundings' range); k: the k-th."));
+    par.addParam(RichInt("FakeHoles", d.validation.fake_holes, "Fake holes per hole",
+                         "Embedded backend: cut this many holes of each hole's size into the "
+                         "known surface near it, fill them every way (the coarse fill, detail "
+                         "amplitudes 0 to 2) and fill the real hole the way that came closest "
+                         "to the surface cut out (0-16). 0: every hole gets the detail below."));
+    par.addParam(RichFloat("Detail", float(d.inpaint.detail), "Detail",
+                           "Embedded backend, with no fake holes: the amplitude of the "
+                           "synthesised detail, relative to the surroundings' own (0-10; 0: "
+                           "the smooth continuation of the curvature)."));
     AddPaperModeParams(par);
     par.addParam(
         RichEnum("Mode", 0,
@@ -346,6 +355,8 @@ bool FilterCurvatureInpaintPlugin::applyHoleFill(MeshModel& mm, const RichParame
   p.inpaint.prompt = par.getString("Prompt").toStdString();
   p.inpaint.variations = par.getInt("Variations");
   p.pick = par.getInt("Variation");
+  p.validation.fake_holes = par.getInt("FakeHoles");
+  p.inpaint.detail = par.getFloat("Detail");
   ReadDeformationParams(par, p);
   p.images.coarse.max_hole_edges = par.getInt("MaxHoleSize");
   p.images.coarse.keep_longest_open = par.getBool("KeepLongestOpen");

@@ -1,5 +1,6 @@
 #include "hole_fill.h"
 
+#include "fake_holes.h"
 #include "pipeline.h"
 
 #include <vcg_ext/curvature_colormap.h>
@@ -18,6 +19,7 @@
 #include <chrono>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <sstream>
 
@@ -100,122 +102,35 @@ void ScoreAndPick(HoleVariations& hv, int pick) {
                 : int(std::max_element(hv.scores.begin(), hv.scores.end()) - hv.scores.begin()) + 1;
 }
 
-/// Stage 8 for one hole: from the backend, or from the folder a person inpainted by hand in.
-HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& params,
-                           const InpaintParams& inpaint) {
-  HoleVariations hv;
-  hv.images_s = hi.seconds;
-  if (!hi.problem.empty()) {
-    hv.problem = hi.problem;
-    return hv;
-  }
-  const auto t = Clock::now();
-  hv.image = ToQImage(hi.image, false);
-  hv.mask = MaskImage(hi.image);
-  if (params.inpainted_dir.empty()) {
-    hv.variations = Inpaint(hv.image, hv.mask, inpaint);
-  } else {
-    const std::string base = params.inpainted_dir + "/hole_" + std::to_string(k + 1);
-    CheckMatchesFolder(base + ".json", hi);
-    QImage done(QString::fromStdString(base + "_inpainted.png"));
-    if (done.isNull()) {
-      hv.problem = "no " + base + "_inpainted.png; it keeps its coarse fill";
-      return hv;
-    }
-    hv.variations = {KnownPixelsKept(done, hv.image, hv.mask)};
-  }
-  hv.inpaint_s = Since(t);
-  ScoreAndPick(hv, params.pick);
-  return hv;
-}
-
-/// The inpainting parameters with the callback as the network layer's cancel hook.
-InpaintParams WithCancel(const HoleFillParams& params, vcg::CallBackPos* cb, const int* progress) {
-  InpaintParams inpaint = params.inpaint;
-  if (cb)
-    inpaint.http.cancelled = [cb, progress] {
-      return !cb(*progress, "Curvature Inpaint: waiting for the inpainter");
-    };
-  return inpaint;
-}
-
-/// The curvature of the deformed patch as an image, normalized like the coarse one.
-QImage FinalCurvatureImage(const HoleImage& hi, const std::vector<Eigen::Vector3d>& points,
-                           const vcg_ext::ApssParams& apss) {
-  const std::vector<Eigen::Vector3d> normals =
-      vcg_ext::detail::VertexNormals(points, hi.patch.triangles);
+/// APSS mean curvature of every vertex of a (deformed) patch, from the patch alone.
+std::vector<double> PatchCurvature(const std::vector<Eigen::Vector3d>& points,
+                                   const std::vector<std::array<int, 3>>& triangles,
+                                   const vcg_ext::ApssParams& apss) {
+  const std::vector<Eigen::Vector3d> normals = vcg_ext::detail::VertexNormals(points, triangles);
   std::vector<int> query(points.size());
   for (size_t i = 0; i < query.size(); ++i) query[i] = int(i);
-  const auto h = vcg_ext::ApssMeanCurvature(points, normals, query, apss);
-  std::vector<double> value(h.size(), 0.5);
-  for (size_t i = 0; i < h.size(); ++i)
-    if (std::isfinite(h[i])) value[i] = std::max(0.0, std::min(1.0, 0.5 + 0.5 * h[i] / hi.scale));
-  return ToQImage(vcg_ext::RasterizeCurvature(hi.uv.uv, value, hi.patch.triangles, hi.patch.is_fill,
-                                              hi.image.size),
-                  false);
+  return vcg_ext::ApssMeanCurvature(points, normals, query, apss);
 }
 
-/// One row of the montage: coarse, mask, variations (the pick framed), final.
-QImage MontageRow(const HoleVariations& hv, int pick, const QImage& final_image) {
-  const int cell = 192, pad = 6, cells = int(hv.variations.size()) + 3;
-  QImage row(cells * (cell + pad) + pad, cell + 2 * pad, QImage::Format_RGB32);
-  row.fill(QColor(40, 40, 48));
-  QPainter painter(&row);
-  std::vector<QImage> tiles{hv.image, hv.mask};
-  tiles.insert(tiles.end(), hv.variations.begin(), hv.variations.end());
-  tiles.push_back(final_image);
-  for (int c = 0; c < cells; ++c) {
-    const QRect r(pad + c * (cell + pad), pad, cell, cell);
-    if (c == pick + 1)
-      painter.fillRect(r.adjusted(-pad / 2, -pad / 2, pad / 2, pad / 2), QColor(255, 255, 255));
-    painter.drawImage(r, tiles[c]);
-  }
-  painter.end();
-  return row;
-}
+/// Stage 9 on one patch: its free vertices moved to the curvature of `target_image`.
+struct PatchDeformation {
+  std::vector<Eigen::Vector3d> points; ///< the whole patch, unit box
+  std::vector<double> target;          ///< colour-map value at each free vertex
+  vcg_ext::DeformationResult result;   ///< not solved: it would fold or cross the patch
+  int backoffs = 0;
+};
 
-/// Stages 8-9 for hole k: its variations (given, or from the backend), the pick, and the
-/// deformation of its patch (`points`, empty when the hole keeps its coarse fill). Touches
-/// nothing shared, so holes can run in parallel.
-void DeformHole(const HoleImage& hi, size_t k, const vcg_ext::CoarseFillResult& coarse,
-                const HoleFillParams& params, const InpaintParams& inpaint,
-                const std::vector<HoleVariations>* chosen, HoleFillReport& report,
-                HoleVariations& hv, std::vector<Eigen::Vector3d>& points, QImage& final_image) {
-  report.hole = hi.hole;
-  report.boundary_edges = coarse.holes[hi.hole].boundary_edges;
-  report.new_vertices = int(coarse.holes[hi.hole].new_vertices.size());
-  report.coarse_s = coarse.holes[hi.hole].seconds;
-  report.images_s = hi.seconds;
-  if (chosen) {
-    hv = (*chosen)[k];
-    if (hv.problem.empty() && (hv.image.size() != QSize(hi.image.size, hi.image.size) ||
-                               ToQImage(hi.image, false) != hv.image))
-      throw std::runtime_error("the previewed hole " + std::to_string(k + 1) +
-                               " differs from the mesh's: preview again with the same settings");
-    if (!hi.problem.empty()) hv.problem = hi.problem;
-    if (hv.problem.empty() && hv.pick == 0) hv.problem = "skipped; it keeps its coarse fill";
-    if (hv.problem.empty() && (hv.pick < 0 || hv.pick > int(hv.variations.size())))
-      throw std::invalid_argument("hole " + std::to_string(k + 1) + " has no variation " +
-                                  std::to_string(hv.pick));
-  } else {
-    hv = InpaintHole(hi, k, params, inpaint);
-  }
-  report.inpaint_s = hv.inpaint_s;
-  report.scores = hv.scores;
-  report.pick = hv.pick;
-  if (!hv.problem.empty()) {
-    report.problem = hv.problem;
-    return;
-  }
-  const QImage& target_image = hv.variations[report.pick - 1];
-
-  const auto t = Clock::now();
+PatchDeformation DeformPatch(const HoleImage& hi, const QImage& target_image,
+                             const HoleFillParams& params) {
+  PatchDeformation out;
   const std::vector<char>& free = hi.is_new;
-  std::vector<double> target(hi.patch.points.size(), 0.5);
+  std::vector<double>& target = out.target;
+  target.assign(hi.patch.points.size(), 0.5);
   for (size_t i = 0; i < target.size(); ++i)
     if (free[i]) target[i] = SampleValue(target_image, hi.uv.uv[i]);
-  std::vector<Eigen::Vector3d> moved = hi.patch.points;
-  vcg_ext::DeformationResult dr;
+  std::vector<Eigen::Vector3d>& moved = out.points;
+  moved = hi.patch.points;
+  vcg_ext::DeformationResult& dr = out.result;
   if (params.mode == "direct") {
     // The image's curvature comes from APSS fits several rings wide, the solve's from the
     // cotangent Laplacian: give the solve the coarse patch's own discrete curvature plus the
@@ -241,9 +156,281 @@ void DeformHole(const HoleImage& hi, size_t k, const vcg_ext::CoarseFillResult& 
       dr.solved = false;
       break;
     }
+    ++out.backoffs;
     for (size_t i = 0; i < moved.size(); ++i)
       moved[i] = hi.patch.points[i] + 0.5 * (moved[i] - hi.patch.points[i]);
   }
+  return out;
+}
+
+/// The mean length of the fill's edges in the hole's image, in pixels: the finest detail its
+/// vertices can carry.
+double FillSpacingPixels(const HoleImage& hi) {
+  double sum = 0;
+  int n = 0;
+  for (size_t f = 0; f < hi.patch.triangles.size(); ++f) {
+    if (!hi.patch.is_fill[f]) continue;
+    const auto& t = hi.patch.triangles[f];
+    for (int k = 0; k < 3; ++k) sum += (hi.uv.uv[t[k]] - hi.uv.uv[t[(k + 1) % 3]]).norm(), ++n;
+  }
+  return n ? hi.image.size * sum / n : 0.0;
+}
+
+/// What the validation reads of the mesh being filled (never written while holes run).
+struct ValidationContext {
+  const CMeshO* mesh = nullptr;
+  const vcg_ext::CoarseFillResult* coarse = nullptr;
+  const vcg_ext::VertexFaces* vf = nullptr;
+};
+
+/// The fill triangles of a patch.
+std::vector<std::array<int, 3>> FillTriangles(const vcg_ext::PatchMesh& patch) {
+  std::vector<std::array<int, 3>> tris;
+  for (size_t f = 0; f < patch.triangles.size(); ++f)
+    if (patch.is_fill[f]) tris.push_back(patch.triangles[f]);
+  return tris;
+}
+
+/// Fake-hole validation of hole `hi` (embedded backend): every candidate (the coarse fill, the
+/// embedded inpainter at each detail amplitude) fills fake holes of its size near it and is
+/// scored against the surface that was cut out; `hv` gets the candidates, their errors and the
+/// choice (-1 when there was no room for fake holes: the variation score then chooses alone).
+void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const InpaintParams& inpaint,
+                  const ValidationContext& ctx, HoleVariations& hv) {
+  const ValidationParams& vp = params.validation;
+  if (vp.coarse) hv.candidates.push_back("coarse");
+  for (double a : vp.details)
+    hv.candidates.push_back("detail " + QString::number(a, 'g', 3).toStdString());
+  FakeHoleParams fp;
+  fp.count = vp.fake_holes;
+  fp.seed = params.inpaint.seed;
+  std::string why;
+  const auto fakes = CutFakeHoles(*ctx.mesh, *ctx.vf, *ctx.coarse, hi.hole, fp, &why);
+  const size_t n = hv.candidates.size();
+  std::vector<double> error(n, 0.0), detail(n, 0.0);
+  int used = 0;
+  for (const auto& fake_hole : fakes) {
+    const FakeHole& fake = *fake_hole;
+    CMeshO local;
+    CopyMesh(fake.holed, local);
+    CurvatureImagesParams ip = params.images;
+    ip.coarse.keep_longest_open = true; // the piece's own border
+    ip.coarse.max_hole_edges = 0;
+    ip.coarse.max_hole_diameter = 0;
+    ip.coarse.selected_only = false;
+    ip.coarse.threads = 1; // holes already run in parallel
+    ip.color_vertices = false;
+    ip.image_size = std::min(ip.image_size, vp.image_size);
+    CurvatureImagesResult images;
+    try {
+      images = ComputeCurvatureImages(local, ip);
+    } catch (const std::exception&) {
+      continue;
+    }
+    const HoleImage* f = nullptr;
+    for (const auto& h : images.holes)
+      if (h.problem.empty()) f = &h;
+    if (!f) continue;
+    // The truth's curvature spread over the cut, for the detail ratios of the tie-break.
+    std::vector<int> cut_vertices;
+    const Point3m centre(Scalarm(fake.centre.x()), Scalarm(fake.centre.y()),
+                         Scalarm(fake.centre.z()));
+    const Scalarm r = Scalarm(fake.radius / images.coarse.box.scale);
+    for (size_t v = 0; v < fake.truth.vert.size(); ++v)
+      if (vcg::Distance(fake.truth.vert[v].cP(), centre) < r) cut_vertices.push_back(int(v));
+    std::vector<Eigen::Vector3d> support, normals;
+    ApssNeighbourhood(fake.truth, vcg_ext::VertexFaces(fake.truth), images.coarse.box, cut_vertices,
+                      ip.apss_rings, support, normals);
+    std::vector<int> query(cut_vertices.size());
+    for (size_t i = 0; i < query.size(); ++i) query[i] = int(i);
+    const double truth_spread =
+        Spread(vcg_ext::ApssMeanCurvature(support, normals, query, ip.apss));
+
+    const auto fill = FillTriangles(f->patch);
+    const QImage image = ToQImage(f->image, false), mask = MaskImage(f->image);
+    InpaintParams one = inpaint;
+    one.detail_scale = FillSpacingPixels(*f);
+    const std::vector<QImage> completed = InpaintEmbeddedAmplitudes(image, mask, one, vp.details);
+    for (size_t c = 0; c < n; ++c) {
+      std::vector<Eigen::Vector3d> points = f->patch.points;
+      if (hv.candidates[c] != "coarse") {
+        const PatchDeformation d = DeformPatch(*f, completed.at(c - (vp.coarse ? 1 : 0)), params);
+        if (d.result.solved) points = d.points;
+      }
+      error[c] += FakeHoleError(fake, points, fill) / fake.radius;
+      std::vector<double> h = PatchCurvature(points, f->patch.triangles, ip.apss), free_h;
+      for (size_t i = 0; i < h.size(); ++i)
+        if (f->is_new[i]) free_h.push_back(h[i]);
+      detail[c] += truth_spread > 0 ? Spread(free_h) / truth_spread : 0.0;
+    }
+    ++used;
+  }
+  hv.fake_holes = used;
+  if (used == 0) {
+    hv.candidates.clear();
+    hv.validation_note = (why.empty() ? std::string("no fake hole near it could be filled") : why) +
+                         "; the variation score chooses";
+    return;
+  }
+  for (size_t c = 0; c < n; ++c) error[c] /= used, detail[c] /= used;
+  hv.validation_errors = error;
+  hv.validation_detail = detail;
+  // The lowest error; among candidates within 2 % of it, one whose detail ratio lies in
+  // 0.7-1.3 (as much detail as the surface shows), if any.
+  size_t best = size_t(std::min_element(error.begin(), error.end()) - error.begin());
+  size_t choice = best;
+  for (size_t c = 0; c < n; ++c) {
+    const bool tied = error[c] <= 1.02 * error[best];
+    const bool natural = detail[c] >= 0.7 && detail[c] <= 1.3;
+    const bool choice_natural = detail[choice] >= 0.7 && detail[choice] <= 1.3;
+    if (tied && natural && (!choice_natural || error[c] < error[choice])) choice = c;
+  }
+  hv.choice = int(choice);
+  if (!why.empty()) hv.validation_note = why;
+}
+
+/// Stage 8 for one hole: from the backend, or from the folder a person inpainted by hand in.
+HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& params,
+                           const InpaintParams& inpaint, const ValidationContext& ctx) {
+  HoleVariations hv;
+  hv.images_s = hi.seconds;
+  if (!hi.problem.empty()) {
+    hv.problem = hi.problem;
+    return hv;
+  }
+  const auto t = Clock::now();
+  hv.image = ToQImage(hi.image, false);
+  hv.mask = MaskImage(hi.image);
+  if (params.oracle) {
+    GroundTruthImage truth = params.oracle->Image(hi);
+    if (!truth.problem.empty()) {
+      hv.problem = "oracle: " + truth.problem + "; it keeps its coarse fill";
+      return hv;
+    }
+    hv.truth_spread = truth.spread;
+    hv.variations = {KnownPixelsKept(truth.image, hv.image, hv.mask)};
+  } else if (params.inpainted_dir.empty()) {
+    hv.detail_scale = FillSpacingPixels(hi);
+    InpaintParams at_scale = inpaint;
+    if (at_scale.detail_scale <= 0) at_scale.detail_scale = hv.detail_scale;
+    if (ctx.mesh && inpaint.backend == "embedded" && params.validation.fake_holes > 0) {
+      ValidateHole(hi, params, inpaint, ctx, hv);
+      if (hv.choice >= 0 && hv.candidates[size_t(hv.choice)] != "coarse")
+        at_scale.detail = params.validation.details[size_t(hv.choice) - params.validation.coarse];
+    }
+    hv.variations = Inpaint(hv.image, hv.mask, at_scale);
+  } else {
+    const std::string base = params.inpainted_dir + "/hole_" + std::to_string(k + 1);
+    CheckMatchesFolder(base + ".json", hi);
+    QImage done(QString::fromStdString(base + "_inpainted.png"));
+    if (done.isNull()) {
+      hv.problem = "no " + base + "_inpainted.png; it keeps its coarse fill";
+      return hv;
+    }
+    hv.variations = {KnownPixelsKept(done, hv.image, hv.mask)};
+  }
+  hv.inpaint_s = Since(t);
+  ScoreAndPick(hv, params.pick);
+  // The automatic pick follows the validation: where the coarse fill validated best, the hole
+  // keeps it (a pick given by number still applies).
+  if (params.pick == 0 && hv.choice >= 0 && hv.candidates[size_t(hv.choice)] == "coarse")
+    hv.pick = 0;
+  return hv;
+}
+
+/// The inpainting parameters with the callback as the network layer's cancel hook.
+InpaintParams WithCancel(const HoleFillParams& params, vcg::CallBackPos* cb, const int* progress) {
+  InpaintParams inpaint = params.inpaint;
+  if (cb)
+    inpaint.http.cancelled = [cb, progress] {
+      return !cb(*progress, "Curvature Inpaint: waiting for the inpainter");
+    };
+  return inpaint;
+}
+
+/// The curvature of the deformed patch as an image, normalized like the coarse one.
+QImage FinalCurvatureImage(const HoleImage& hi, const std::vector<Eigen::Vector3d>& points,
+                           const vcg_ext::ApssParams& apss) {
+  const auto h = PatchCurvature(points, hi.patch.triangles, apss);
+  std::vector<double> value(h.size(), 0.5);
+  for (size_t i = 0; i < h.size(); ++i)
+    if (std::isfinite(h[i])) value[i] = std::max(0.0, std::min(1.0, 0.5 + 0.5 * h[i] / hi.scale));
+  return ToQImage(vcg_ext::RasterizeCurvature(hi.uv.uv, value, hi.patch.triangles, hi.patch.is_fill,
+                                              hi.image.size),
+                  false);
+}
+
+/// One row of the montage: coarse, mask, variations (the pick framed), final.
+QImage MontageRow(const HoleVariations& hv, int pick, const QImage& final_image) {
+  const int cell = 192, pad = 6, cells = int(hv.variations.size()) + 3;
+  QImage row(cells * (cell + pad) + pad, cell + 2 * pad, QImage::Format_RGB32);
+  row.fill(QColor(40, 40, 48));
+  QPainter painter(&row);
+  std::vector<QImage> tiles{hv.image, hv.mask};
+  tiles.insert(tiles.end(), hv.variations.begin(), hv.variations.end());
+  tiles.push_back(final_image);
+  for (int c = 0; c < cells; ++c) {
+    const QRect r(pad + c * (cell + pad), pad, cell, cell);
+    if (pick > 0 && c == pick + 1)
+      painter.fillRect(r.adjusted(-pad / 2, -pad / 2, pad / 2, pad / 2), QColor(255, 255, 255));
+    painter.drawImage(r, tiles[c]);
+  }
+  painter.end();
+  return row;
+}
+
+/// Stages 8-9 for hole k: its variations (given, or from the backend), the pick, and the
+/// deformation of its patch (`points`, empty when the hole keeps its coarse fill). Touches
+/// nothing shared, so holes can run in parallel.
+void DeformHole(const HoleImage& hi, size_t k, const vcg_ext::CoarseFillResult& coarse,
+                const HoleFillParams& params, const InpaintParams& inpaint,
+                const ValidationContext& ctx, const std::vector<HoleVariations>* chosen,
+                HoleFillReport& report, HoleVariations& hv, std::vector<Eigen::Vector3d>& points,
+                QImage& final_image) {
+  report.hole = hi.hole;
+  report.boundary_edges = coarse.holes[hi.hole].boundary_edges;
+  report.new_vertices = int(coarse.holes[hi.hole].new_vertices.size());
+  report.coarse_s = coarse.holes[hi.hole].seconds;
+  report.images_s = hi.seconds;
+  if (chosen) {
+    hv = (*chosen)[k];
+    if (hv.problem.empty() && (hv.image.size() != QSize(hi.image.size, hi.image.size) ||
+                               ToQImage(hi.image, false) != hv.image))
+      throw std::runtime_error("the previewed hole " + std::to_string(k + 1) +
+                               " differs from the mesh's: preview again with the same settings");
+    if (!hi.problem.empty()) hv.problem = hi.problem;
+    if (hv.problem.empty() && hv.pick == 0) hv.problem = "skipped; it keeps its coarse fill";
+    if (hv.problem.empty() && (hv.pick < 0 || hv.pick > int(hv.variations.size())))
+      throw std::invalid_argument("hole " + std::to_string(k + 1) + " has no variation " +
+                                  std::to_string(hv.pick));
+  } else {
+    hv = InpaintHole(hi, k, params, inpaint, ctx);
+    if (hv.problem.empty() && hv.pick == 0)
+      hv.problem = "the coarse fill validated best; it keeps it";
+  }
+  report.candidates = hv.candidates;
+  report.validation_errors = hv.validation_errors;
+  report.validation_detail = hv.validation_detail;
+  report.choice = hv.choice;
+  report.fake_holes = hv.fake_holes;
+  report.validation_note = hv.validation_note;
+  report.inpaint_s = hv.inpaint_s;
+  report.truth_spread = hv.truth_spread;
+  report.scores = hv.scores;
+  report.pick = hv.pick;
+  if (!hv.problem.empty()) {
+    report.problem = hv.problem;
+    return;
+  }
+  const QImage& target_image = hv.variations[report.pick - 1];
+
+  const auto t = Clock::now();
+  const std::vector<char>& free = hi.is_new;
+  PatchDeformation deformed = DeformPatch(hi, target_image, params);
+  const std::vector<double>& target = deformed.target;
+  std::vector<Eigen::Vector3d>& moved = deformed.points;
+  const vcg_ext::DeformationResult& dr = deformed.result;
+  report.backoffs = deformed.backoffs;
   report.deform_s = Since(t);
   report.iterations = dr.iterations;
   report.differing = dr.differing;
@@ -252,6 +439,14 @@ void DeformHole(const HoleImage& hi, size_t k, const vcg_ext::CoarseFillResult& 
     report.problem =
         "the deformation would fold the patch or make it cross itself; it keeps its coarse fill";
     return;
+  }
+  if (params.measure_detail) {
+    std::vector<double> th, rh;
+    const std::vector<double> h = PatchCurvature(moved, hi.patch.triangles, params.images.apss);
+    for (size_t i = 0; i < target.size(); ++i)
+      if (free[i]) th.push_back(2 * hi.scale * (target[i] - 0.5)), rh.push_back(h[i]);
+    report.target_spread = Spread(th);
+    report.result_spread = Spread(rh);
   }
   points = std::move(moved);
   if (!params.images_dir.empty()) final_image = FinalCurvatureImage(hi, points, params.images.apss);
@@ -262,7 +457,9 @@ void DeformHole(const HoleImage& hi, size_t k, const vcg_ext::CoarseFillResult& 
 void InpaintAgain(HoleVariations& hole, const InpaintParams& params) {
   if (hole.image.isNull()) throw std::runtime_error("this hole has no curvature image");
   const auto t = Clock::now();
-  hole.variations = Inpaint(hole.image, hole.mask, params);
+  InpaintParams at_scale = params;
+  if (at_scale.detail_scale <= 0) at_scale.detail_scale = hole.detail_scale;
+  hole.variations = Inpaint(hole.image, hole.mask, at_scale);
   hole.inpaint_s = Since(t);
   ScoreAndPick(hole, 0);
 }
@@ -275,13 +472,15 @@ std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& 
   const CurvatureImagesResult images = ComputeCurvatureImages(scratch, ip, cb);
   int progress = 0;
   const InpaintParams inpaint = WithCancel(params, cb, &progress);
+  const vcg_ext::VertexFaces vf(scratch);
+  const ValidationContext ctx{&scratch, &images.coarse, &vf};
   std::vector<HoleVariations> holes;
   for (size_t k = 0; k < images.holes.size(); ++k) {
     progress = int(100.0 * k / images.holes.size());
     if (cb &&
         !cb(progress, ("Curvature Inpaint: inpainting hole " + std::to_string(k + 1)).c_str()))
       throw vcg_ext::CancelledError();
-    holes.push_back(InpaintHole(images.holes[k], k, params, inpaint));
+    holes.push_back(InpaintHole(images.holes[k], k, params, inpaint, ctx));
   }
   return holes;
 }
@@ -343,6 +542,9 @@ void CheckHoleFillParams(const HoleFillParams& p) {
   RequireRange(p.paper.similitude, 0, 255, "the similitude");
   RequireRange(p.paper.transformation_constant, 0, 1, "the transformation constant");
   RequireRange(p.paper.max_iterations, 1, 100000, "the deformation steps");
+  RequireRange(p.validation.fake_holes, 0, 16, "the fake holes per hole");
+  RequireRange(p.validation.image_size, 16, 8192, "the fake holes' image size");
+  for (double a : p.validation.details) RequireRange(a, 0, 10, "a validated detail amplitude");
 }
 
 HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackPos* cb,
@@ -371,6 +573,10 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
   };
   std::map<int, HoleWork> work; // by hole; nodes stay put while other threads insert
   std::mutex work_mutex;
+  const bool validates = !chosen && !params.oracle && params.inpainted_dir.empty() &&
+                         params.inpaint.backend == "embedded" && params.validation.fake_holes > 0;
+  std::once_flag vf_once;
+  std::unique_ptr<vcg_ext::VertexFaces> vf;
   auto fill_hole = [&](const vcg_ext::CoarseFillResult& coarse, int k, HoleImage& hi) {
     if (chosen && size_t(k) >= chosen->size())
       throw std::runtime_error("the previewed variations are for " +
@@ -381,11 +587,21 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
       std::lock_guard<std::mutex> lock(work_mutex);
       w = &work[k];
     }
+    // The validation reads the filled mesh around each hole: its vertex-face adjacency is
+    // built once, by the first hole that needs it (every coarse fill is in place by then).
+    ValidationContext ctx;
+    if (validates) {
+      std::call_once(vf_once, [&] { vf = std::make_unique<vcg_ext::VertexFaces>(m); });
+      ctx = ValidationContext{&m, &coarse, vf.get()};
+    }
     HoleVariations hv;
     QImage final_image;
-    DeformHole(hi, size_t(k), coarse, params, inpaint, chosen, w->report, hv, w->points,
+    DeformHole(hi, size_t(k), coarse, params, inpaint, ctx, chosen, w->report, hv, w->points,
                final_image);
-    if (!params.images_dir.empty() && !w->points.empty()) {
+    // The pictures of every hole that has variations, also one that keeps its coarse fill
+    // (its final image is then the coarse one, and no variation is framed).
+    if (!params.images_dir.empty() && !hv.variations.empty()) {
+      if (final_image.isNull()) final_image = hv.image;
       const std::string base = params.images_dir + "/hole_" + std::to_string(k + 1);
       SavePng(hv.image, base + "_coarse.png");
       SavePng(hv.mask, base + "_mask.png");
@@ -422,12 +638,12 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
       const HoleImage& hi = images.holes[k];
       HoleWork& w = work.at(int(k));
       result.holes.push_back(w.report);
+      if (!w.montage_row.isNull()) montage_rows.push_back(w.montage_row);
       if (w.points.empty()) continue;
       const std::vector<char>& free = hi.is_new;
       for (size_t i = 0; i < w.points.size(); ++i)
         if (free[i])
           m.vert[hi.patch.vertices[i]].P() = result.coarse.box.FromUnit<Scalarm>(w.points[i]);
-      if (!w.montage_row.isNull()) montage_rows.push_back(w.montage_row);
     }
     if (!montage_rows.empty()) {
       int w = 0, h = 0;
@@ -458,11 +674,30 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
   return result;
 }
 
+std::string DescribeValidation(const std::vector<std::string>& candidates,
+                               const std::vector<double>& errors, int choice, int fake_holes,
+                               const std::string& note) {
+  if (candidates.empty()) return note.empty() ? "not validated" : note;
+  std::ostringstream o;
+  o << "on " << fake_holes << " fake hole" << (fake_holes == 1 ? "" : "s")
+    << ", RMS in % of the hole's radius:";
+  for (size_t c = 0; c < candidates.size() && c < errors.size(); ++c)
+    o << (c ? ", " : " ") << candidates[c] << " "
+      << QString::number(100 * errors[c], 'f', 2).toStdString();
+  if (choice >= 0 && size_t(choice) < candidates.size()) o << "; chose " << candidates[choice];
+  if (!note.empty()) o << " (" << note << ")";
+  return o.str();
+}
+
 std::vector<std::string> DescribeHoleFill(const HoleFillResult& result) {
   std::vector<std::string> lines = DescribeCoarseFill(result.coarse);
   char buf[512];
   for (size_t k = 0; k < result.holes.size(); ++k) {
     const auto& r = result.holes[k];
+    if (!r.candidates.empty() || !r.validation_note.empty())
+      lines.push_back("validation " + std::to_string(k + 1) + ": " +
+                      DescribeValidation(r.candidates, r.validation_errors, r.choice, r.fake_holes,
+                                         r.validation_note));
     if (!r.problem.empty()) {
       std::snprintf(buf, sizeof buf, "detail %zu: none: %s", k + 1, r.problem.c_str());
     } else {
@@ -491,10 +726,23 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
       << ", \"boundary_edges\": " << r.boundary_edges << ", \"new_vertices\": " << r.new_vertices
       << ", \"scores\": [";
     for (size_t j = 0; j < r.scores.size(); ++j) o << (j ? ", " : "") << r.scores[j];
-    o << "], \"pick\": " << r.pick << ", \"iterations\": " << r.iterations
-      << ", \"max_move\": " << r.max_move << ", \"seconds\": {\"coarse\": " << r.coarse_s
-      << ", \"images\": " << r.images_s << ", \"inpaint\": " << r.inpaint_s
-      << ", \"deform\": " << r.deform_s << "}";
+    o << "]";
+    if (!r.candidates.empty()) {
+      o << ", \"validation\": {\"fake_holes\": " << r.fake_holes << ", \"candidates\": [";
+      for (size_t c = 0; c < r.candidates.size(); ++c)
+        o << (c ? ", " : "") << "{\"name\": \"" << r.candidates[c]
+          << "\", \"error\": " << r.validation_errors[c]
+          << ", \"detail_ratio\": " << r.validation_detail[c] << "}";
+      o << "], \"choice\": \"" << r.candidates[size_t(r.choice)] << "\"}";
+    }
+    o << ", \"pick\": " << r.pick << ", \"iterations\": " << r.iterations
+      << ", \"backoffs\": " << r.backoffs << ", \"max_move\": " << r.max_move
+      << ", \"seconds\": {\"coarse\": " << r.coarse_s << ", \"images\": " << r.images_s
+      << ", \"inpaint\": " << r.inpaint_s << ", \"deform\": " << r.deform_s << "}";
+    if (params.measure_detail)
+      o << ", \"curvature_spread\": {\"truth\": " << r.truth_spread.truth
+        << ", \"truth_image\": " << r.truth_spread.image << ", \"target\": " << r.target_spread
+        << ", \"result\": " << r.result_spread << "}";
     if (!r.problem.empty()) {
       std::string p = r.problem;
       for (auto& c : p)

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "curvature_images.h"
+#include "ground_truth_image.h"
 #include "inpaint/inpainter.h"
 
 #include <vcg_ext/curvature_deformation.h>
@@ -13,18 +14,36 @@
 
 namespace curvature_inpaint {
 
+/// Fake-hole validation (embedded backend): each hole is filled the way that came closest to
+/// the surface cut out of fake holes of its size near it.
+struct ValidationParams {
+  int fake_holes = 4;                        ///< per hole; 0: the variation score chooses alone
+  bool coarse = true;                        ///< the coarse fill as it is is a candidate
+  std::vector<double> details{0, 0.5, 1, 2}; ///< detail amplitudes of the embedded inpainter
+  int image_size = 256;                      ///< of the fake holes' images (at most the holes')
+};
+
 struct HoleFillParams {
+  /// The fill's detail amplitude where no validation chooses it: 0, the best fixed amplitude
+  /// on the tuning half of bench/holes.tsv (0.5 and 2 were further from the ground truth).
+  HoleFillParams() { inpaint.detail = 0; }
   CurvatureImagesParams images;
   InpaintParams inpaint;
   std::string mode = "direct"; ///< "direct" or "paper"
   int pick = 0;                ///< 0: the best score; k >= 1: variation k of every hole
   vcg_ext::DirectDeformationParams direct;
   vcg_ext::PaperDeformationParams paper;
+  ValidationParams validation;
   std::string images_dir; ///< where to write every hole's images; empty: nowhere
   /// Instead of a backend: the folder where the Curvature Images stage wrote hole_<k>.json and
   /// a person (in any image editor) left hole_<k>_inpainted.png. The patches are rebuilt with
   /// the same parameters and must match the JSON files.
   std::string inpainted_dir;
+  /// Instead of a backend: the ground truth's own curvature image of every hole (the
+  /// benchmark's oracle, see ground_truth_image.h). Not owned.
+  const GroundTruthOracle* oracle = nullptr;
+  /// Measure the curvature spread of each hole's target and result (for the report).
+  bool measure_detail = false;
 };
 
 struct HoleFillReport {
@@ -34,10 +53,22 @@ struct HoleFillReport {
   std::vector<double> scores; ///< per variation: higher is better
   int pick = 0;               ///< 1-based
   int iterations = 0;         ///< deformation solves (direct) or steps (paper)
+  int backoffs = 0;           ///< halvings towards the coarse fill that undid a fold or crossing
   std::vector<int> differing; ///< paper mode: differing vertices per step
   double max_move = 0;        ///< unit-box units
   double coarse_s = 0, images_s = 0, inpaint_s = 0, deform_s = 0;
-  std::string problem; ///< why the hole kept its coarse fill; empty if none
+  /// Curvature spread (standard deviation over the fill, unit-box curvature) of what the
+  /// chain carries, when measured: the ground truth and its image (oracle only, else 0), the
+  /// target at the fill's vertices and the deformed fill's APSS curvature.
+  GroundTruthSpread truth_spread;
+  double target_spread = 0, result_spread = 0;
+  std::vector<std::string> candidates;   ///< validated ways to fill it; empty: not validated
+  std::vector<double> validation_errors; ///< per candidate: RMS over the fake holes / radius
+  std::vector<double> validation_detail; ///< per candidate: detail ratio on the fake holes
+  int choice = -1;                       ///< index into candidates
+  int fake_holes = 0;
+  std::string validation_note; ///< why there are fewer fake holes, or none
+  std::string problem;         ///< why the hole kept its coarse fill; empty if none
 };
 
 /// One hole's inpainting (stages 3-8) as a person previews it and FillHoles applies it.
@@ -47,6 +78,14 @@ struct HoleVariations {
   std::vector<double> scores;     ///< ScoreVariation of each
   int pick = 0;                   ///< 1-based; 0: the hole keeps its coarse fill
   std::string problem;            ///< why there is nothing to choose from; empty if none
+  GroundTruthSpread truth_spread; ///< with the oracle: the ground truth's and its image's
+  double detail_scale = 0;        ///< the fill's vertex spacing in the image, pixels
+  /// Fake-hole validation, as in HoleFillReport; pick is 0 where "coarse" validated best.
+  std::vector<std::string> candidates;
+  std::vector<double> validation_errors, validation_detail;
+  int choice = -1;
+  int fake_holes = 0;
+  std::string validation_note;
   double images_s = 0, inpaint_s = 0;
 };
 
@@ -80,6 +119,12 @@ void InpaintAgain(HoleVariations& hole, const InpaintParams& params);
 /// field crosses the hole's border, how close the hole's colours stay to the palette, and how
 /// far its values leave the known ring's range.
 double ScoreVariation(const QImage& variation, const QImage& mask);
+
+/// One line on a hole's fake-hole validation: the candidates' errors and the choice, or why
+/// it was not validated.
+std::string DescribeValidation(const std::vector<std::string>& candidates,
+                               const std::vector<double>& errors, int choice, int fake_holes,
+                               const std::string& note);
 
 std::vector<std::string> DescribeHoleFill(const HoleFillResult& result);
 

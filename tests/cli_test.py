@@ -4,8 +4,9 @@ import math
 import os
 import unittest
 
-from support import (SHARED_MESHES, SOURCE, TOOL, TempDirTest, grid, info, png_size, run, sha256,
-                     write_ascii_ply, write_binary_ply, write_non_manifold_ply)
+from support import (SHARED_MESHES, SOURCE, TOOL, TempDirTest, grid, info, png_size,
+                     read_binary_ply_xyz, run, sha256, write_ascii_ply, write_binary_ply,
+                     write_non_manifold_ply)
 
 
 class CoarseFill(TempDirTest):
@@ -206,7 +207,8 @@ class HoleShapes(TempDirTest):
         """Runs fill to OFF and checks what holds for every shape: exit 0, manifold, no vertex
         of the input moved (only the fill's own vertices are deformed). Returns (info, report)."""
         out, report = self.path("out.off"), self.path("report.json")
-        r = run([TOOL, "fill", src, out, "--size", "256", "--report", report, *options])
+        # Detail on every hole (no fake holes choosing): the deformation runs on each shape.
+        r = run([TOOL, "fill", src, out, "--size", "256", "--report", report, "--detail", "1", *options])
         self.assertEqual(r.returncode, 0, r.stderr)
         after = info(out)
         self.assertEqual(after["non_manifold_edges"], 0)
@@ -292,6 +294,59 @@ class HoleShapes(TempDirTest):
         self.assertEqual(after["holes"], 0)
         self.assertEqual(after["vertices"] - after["faces"] // 2, 0)  # V - E + F = V - F / 2
         self.assert_detailed(report, 1)
+
+
+class DetailAndValidation(TempDirTest):
+    """The detail amplitude changes the fill; without one, fake holes choose per hole."""
+
+    SAMPLE = os.path.join(SOURCE, "meshes", "sample_holes.ply")
+
+    def fill(self, *options):
+        out, report = self.path("out.ply"), self.path("report.json")
+        r = run([TOOL, "fill", self.SAMPLE, out, "--size", "256", "--report", report, *options])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(report) as f:
+            return read_binary_ply_xyz(out), json.load(f)["holes"], r.stderr
+
+    def test_the_detail_amplitude_changes_the_filled_vertices(self):
+        n = len(read_binary_ply_xyz(self.SAMPLE))
+        smooth, holes0, _ = self.fill("--detail", "0")
+        detailed, holes2, _ = self.fill("--detail", "2")
+        self.assertEqual(smooth[:n], detailed[:n])  # the scan as it was, both times
+        self.assertEqual(len(smooth), len(detailed))
+        moved = max(max(abs(a - b) for a, b in zip(p, q)) for p, q in zip(smooth[n:], detailed[n:]))
+        self.assertGreater(moved, 1e-4)
+        for h in holes0 + holes2:
+            self.assertNotIn("validation", h)  # an amplitude given: no fake holes
+        # Detail 0 is the smooth continuation: every variation the same.
+        self.assertTrue(all(len(set(h["scores"])) == 1 for h in holes0), holes0)
+        self.assertTrue(any(len(set(h["scores"])) > 1 for h in holes2), holes2)
+
+    def test_fake_holes_choose_and_the_log_says_how(self):
+        _, holes, log = self.fill()
+        self.assertEqual(len(holes), 3)
+        for k, h in enumerate(holes, 1):
+            v = h["validation"]
+            names = [c["name"] for c in v["candidates"]]
+            self.assertEqual(names, ["coarse", "detail 0", "detail 0.5", "detail 1", "detail 2"])
+            self.assertGreaterEqual(v["fake_holes"], 1)
+            errors = {c["name"]: c["error"] for c in v["candidates"]}
+            best = min(errors.values())
+            self.assertLessEqual(errors[v["choice"]], 1.02 * best)  # the best, or tied with it
+            self.assertEqual(h["pick"] == 0, v["choice"] == "coarse", h)
+            self.assertIn(f"validation {k}: on {v['fake_holes']} fake hole", log)
+            self.assertIn(f"chose {v['choice']}", log)
+        # The same seed: the same choices and the same mesh.
+        again, holes_again, _ = self.fill()
+        self.assertEqual([h["validation"]["choice"] for h in holes],
+                         [h["validation"]["choice"] for h in holes_again])
+
+    def test_no_fake_holes_is_the_variation_score(self):
+        _, holes, log = self.fill("--fake-holes", "0")
+        for h in holes:
+            self.assertNotIn("validation", h)
+            self.assertEqual(h["pick"], 1 + max(range(len(h["scores"])), key=lambda i: h["scores"][i]))
+        self.assertNotIn("validation 1:", log)
 
 
 class CurvatureImages(TempDirTest):

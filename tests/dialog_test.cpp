@@ -146,10 +146,15 @@ private slots:
     for (const auto& hole : d.Holes()) {
       QVERIFY(hole.problem.empty());
       QCOMPARE(int(hole.variations.size()), 3);
+      // The automatic pick: the best score, or Skip where the fake holes found the coarse
+      // fill closest; the dialog shows the validation.
+      QVERIFY(!hole.candidates.empty());
+      const bool coarse = hole.candidates[size_t(hole.choice)] == "coarse";
       const int best =
           int(std::max_element(hole.scores.begin(), hole.scores.end()) - hole.scores.begin()) + 1;
-      QCOMPARE(hole.pick, best);
+      QCOMPARE(hole.pick, coarse ? 0 : best);
     }
+    QVERIFY(Find<QLabel>(d, "validation_1")->text().contains("chose"));
     QVERIFY(d.windowTitle().contains("3 of 3 holes ready"));
     QVERIFY(Find<QPushButton>(d, "apply")->isEnabled());
 
@@ -160,6 +165,15 @@ private slots:
     QCOMPARE(d.Holes()[0].pick, 3);
     Find<QCheckBox>(d, "skip_2")->click();
     QCOMPARE(d.Holes()[1].pick, 0);
+    // Hole 3: skipped, then a variation clicked: the click undoes the skip.
+    auto* skip_3 = Find<QCheckBox>(d, "skip_3");
+    if (!skip_3->isChecked()) skip_3->click();
+    QCOMPARE(d.Holes()[2].pick, 0);
+    auto* list_3 = Find<QListWidget>(d, "variations_3");
+    QTest::mouseClick(list_3->viewport(), Qt::LeftButton, {},
+                      list_3->visualItemRect(list_3->item(1)).center());
+    QCOMPARE(d.Holes()[2].pick, 2);
+    QVERIFY(!skip_3->isChecked());
 
     // Apply's input deforms a copy of the mesh as chosen: hole 2 keeps its coarse fill.
     CMeshO applied;

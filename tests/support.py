@@ -127,3 +127,17 @@ class TempDirTest(unittest.TestCase):
                  "--seed-vertex", str(seed), "--radius-frac", str(radius_frac)])
         self.assertEqual(r.returncode, 0, r.stderr)
         return out
+
+
+def read_binary_ply_xyz(path):
+    """Vertex coordinates of a binary little-endian PLY whose vertices start with float x y z."""
+    import struct
+    data = open(path, "rb").read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode()
+    assert "binary_little_endian" in header, header
+    n = int(header.split("element vertex ")[1].split()[0])
+    props = header.split("element vertex")[1].split("element face")[0]
+    sizes = {"float": 4, "double": 8, "uchar": 1, "int": 4, "uint": 4}
+    stride = sum(sizes[line.split()[1]] for line in props.splitlines() if line.startswith("property"))
+    return [struct.unpack_from("<3f", data, end + i * stride) for i in range(n)]

@@ -10,10 +10,12 @@
 #include <QDir>
 #include <QImage>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,11 +27,18 @@ const char* const kUsage =
     "                   [--variations N] [--pick auto|K] [--mode direct|paper] [--similitude S]\n"
     "                   [--transformation-constant T] [--max-hole-edges N] [--size PX]\n"
     "                   [--images DIR] [--report FILE.json] [--from-images DIR] [--context C]\n"
+    "                   [--fake-holes K] [--detail A] [--density D] [--oracle GT]\n"
     "      The main job: fill every hole of IN with detail (coarse fill, curvature images,\n"
     "      inpainting, deformation to the chosen variation) and write OUT. --pick auto (default)\n"
     "      takes the best-scored variation. Backends and their options as for inpaint.\n"
     "      --from-images DIR deforms to hole_<k>_inpainted.png, inpainted by hand in DIR\n"
     "      after `images IN DIR --size PX` (same --max-hole-edges, --context, --size).\n"
+    "      --fake-holes K (default 4): fill each hole the way (coarse fill, or detail 0, 0.5,\n"
+    "      1, 2) that came closest on K holes of its size cut into known surface near it;\n"
+    "      --detail A instead uses amplitude A on every hole (0: the smooth continuation).\n"
+    "      --density D: the fill's vertex density (Liepa's alpha; default 2, coarse 1.41).\n"
+    "      --oracle GT (benchmarks): deform to the curvature image painted from GT, the mesh\n"
+    "      before its holes were cut: the best any inpainter can do with this deformation.\n"
     "  curvature-inpaint coarse IN OUT [--max-hole-edges N] [--max-hole-diameter F]\n"
     "                   [--keep-longest-open] [--selected-only] [--liepa-max-edges M] [--threads "
     "T]\n"
@@ -76,6 +85,9 @@ public:
     std::string c = args_.front();
     args_.erase(args_.begin());
     return c;
+  }
+  bool Has(const std::string& name) const {
+    return std::find(args_.begin(), args_.end(), name) != args_.end();
   }
   bool Flag(const std::string& name) {
     for (size_t i = 0; i < args_.size(); ++i)
@@ -226,8 +238,12 @@ int InpaintCommand(Args& args) {
 
 int Fill(Args& args) {
   curvature_inpaint::HoleFillParams p;
+  const bool detail_given = args.Has("--detail");
   ReadBackendOptions(args, p.inpaint);
   p.inpaint.variations = int(args.Integer("--variations", p.inpaint.variations, 1));
+  // A detail amplitude given is used on every hole; otherwise the fake holes choose.
+  p.validation.fake_holes =
+      int(args.Integer("--fake-holes", detail_given ? 0 : p.validation.fake_holes, 0));
   const std::string pick = args.Option("--pick", "auto");
   if (pick != "auto") {
     char* end = nullptr;
@@ -242,15 +258,26 @@ int Fill(Args& args) {
   const std::string tc = args.Option("--transformation-constant", "");
   if (!tc.empty()) p.paper.transformation_constant = ParsePositive("--transformation-constant", tc);
   ReadHoleSelection(args, p.images.coarse);
+  const std::string density = args.Option("--density", "");
+  if (!density.empty()) p.images.coarse.density_alpha = ParsePositive("--density", density);
   p.images.image_size = int(args.Integer("--size", 512, 16));
   p.images_dir = args.Option("--images", "");
   p.inpainted_dir = args.Option("--from-images", "");
   const std::string context = args.Option("--context", "");
   if (!context.empty()) p.images.segmentation.context = ParsePositive("--context", context);
   const std::string report = args.Option("--report", "");
+  const std::string oracle_path = args.Option("--oracle", "");
   const auto files = args.Positional(2);
   CMeshO m;
   const int mask = curvature_inpaint::LoadMesh(files[0], m);
+  CMeshO ground_truth;
+  std::unique_ptr<curvature_inpaint::GroundTruthOracle> oracle;
+  if (!oracle_path.empty()) {
+    curvature_inpaint::LoadMesh(oracle_path, ground_truth);
+    oracle = std::make_unique<curvature_inpaint::GroundTruthOracle>(ground_truth, m, p.images);
+    p.oracle = oracle.get();
+  }
+  p.measure_detail = !report.empty() || oracle;
   const auto result = curvature_inpaint::FillHoles(m, p, ProgressToStderr);
   for (const auto& line : curvature_inpaint::DescribeHoleFill(result))
     std::fprintf(stderr, "%s\n", line.c_str());

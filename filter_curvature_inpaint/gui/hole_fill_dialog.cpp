@@ -121,6 +121,24 @@ HoleFillDialog::HoleFillDialog(const CMeshO& mesh, QWidget* parent)
   variations_->setValue(4);
   variations_->setToolTip("Inpainted variations per hole, to choose from.");
   form->addRow("&Variations", variations_);
+  const HoleFillParams defaults;
+  fake_holes_ = new QSpinBox;
+  fake_holes_->setObjectName("fakeHoles");
+  fake_holes_->setRange(0, 16);
+  fake_holes_->setValue(defaults.validation.fake_holes);
+  fake_holes_->setToolTip("Embedded backend: cut this many holes of each hole's size into the "
+                          "known surface near it, fill them every way (the coarse fill, detail "
+                          "0 to 2) and choose for the hole the way that came closest to the "
+                          "surface cut out. 0: every hole gets the detail below.");
+  form->addRow("&Fake holes per hole", fake_holes_);
+  detail_ = new QDoubleSpinBox;
+  detail_->setObjectName("detail");
+  detail_->setRange(0, 10);
+  detail_->setSingleStep(0.25);
+  detail_->setValue(defaults.inpaint.detail);
+  detail_->setToolTip("Embedded backend, with no fake holes: the amplitude of the synthesised "
+                      "detail, relative to the surroundings' own (0: the smooth continuation).");
+  form->addRow("&Detail", detail_);
   similitude_ = new QDoubleSpinBox;
   similitude_->setObjectName("similitude");
   similitude_->setRange(1, 255);
@@ -214,6 +232,8 @@ HoleFillParams HoleFillDialog::Params() const {
   p.inpaint.prompt = prompt_->text().toStdString();
   p.inpaint.negative_prompt = negative_prompt_->text().toStdString();
   p.inpaint.variations = variations_->value();
+  p.validation.fake_holes = fake_holes_->value();
+  p.inpaint.detail = detail_->value();
   p.paper.similitude = similitude_->value();
   bool ok = false;
   const double tc = transformation_constant_->text().toDouble(&ok);
@@ -282,6 +302,8 @@ void HoleFillDialog::LoadSettings() {
   const int b = backend_->findText(s.value("backend", "embedded").toString());
   backend_->setCurrentIndex(b < 0 ? 0 : b);
   variations_->setValue(s.value("variations", 4).toInt());
+  fake_holes_->setValue(s.value("fake_holes", HoleFillParams().validation.fake_holes).toInt());
+  detail_->setValue(s.value("detail", HoleFillParams().inpaint.detail).toDouble());
   similitude_->setValue(s.value("similitude", 30.0).toDouble());
   transformation_constant_->setText(s.value("transformation_constant", "5e-05").toString());
   const int m = mode_->findText(s.value("mode", "direct").toString());
@@ -301,6 +323,8 @@ void HoleFillDialog::SaveSettings() const {
   s.setValue(Key(backend, "prompt"), prompt_->text());
   s.setValue(Key(backend, "negative_prompt"), negative_prompt_->text());
   s.setValue("variations", variations_->value());
+  s.setValue("fake_holes", fake_holes_->value());
+  s.setValue("detail", detail_->value());
   s.setValue("similitude", similitude_->value());
   s.setValue("transformation_constant", transformation_constant_->text());
   s.setValue("mode", mode_->currentText());
@@ -416,7 +440,21 @@ void HoleFillDialog::ShowHoles() {
     HoleVariations& hv = holes_[k];
     auto* box = new QGroupBox(QString("Hole %1").arg(k + 1));
     box->setObjectName(QString("hole_%1").arg(k + 1));
-    auto* row = new QHBoxLayout(box);
+    auto* column = new QVBoxLayout(box);
+    auto* row = new QHBoxLayout;
+    column->addLayout(row);
+    if (!hv.candidates.empty() || !hv.validation_note.empty()) {
+      auto* validation = new QLabel(
+          "Validation " +
+          QString::fromStdString(DescribeValidation(hv.candidates, hv.validation_errors, hv.choice,
+                                                    hv.fake_holes, hv.validation_note)));
+      validation->setObjectName(QString("validation_%1").arg(k + 1));
+      validation->setWordWrap(true);
+      validation->setToolTip("Each way to fill this hole, tried on holes of its size cut into the "
+                             "known surface near it: the distance to the surface cut out. The "
+                             "automatic choice is the closest.");
+      column->addWidget(validation);
+    }
     if (!hv.problem.empty()) {
       row->addWidget(new QLabel(QString::fromStdString(hv.problem)));
       holes_layout_->insertWidget(holes_layout_->count() - 1, box);
@@ -436,7 +474,12 @@ void HoleFillDialog::ShowHoles() {
     list->setWrapping(false);
     list->setMovement(QListView::Static);
     list->setMinimumHeight(kThumbnail + 48);
-    const int best = int(std::max_element(hv.scores.begin(), hv.scores.end()) - hv.scores.begin());
+    // The automatic pick: the best score, or none (Skip) where the coarse fill validated best.
+    const bool coarse_chosen = hv.choice >= 0 && hv.candidates[size_t(hv.choice)] == "coarse";
+    const int best =
+        coarse_chosen
+            ? -1
+            : int(std::max_element(hv.scores.begin(), hv.scores.end()) - hv.scores.begin());
     for (size_t j = 0; j < hv.variations.size(); ++j) {
       // The same picture when selected: the selection shows as the frame and the bold label,
       // not as a tint that would make the variation look different.
@@ -455,9 +498,6 @@ void HoleFillDialog::ShowHoles() {
       list->addItem(item);
     }
     if (hv.pick > 0) list->setCurrentRow(hv.pick - 1);
-    connect(list, &QListWidget::currentRowChanged, this, [this, k](int row) {
-      if (row >= 0) holes_[k].pick = row + 1;
-    });
     connect(list, &QListWidget::itemDoubleClicked, this, [this, k, list](QListWidgetItem* item) {
       const QImage& image = holes_[k].variations[size_t(list->row(item))];
       QDialog big(this);
@@ -474,13 +514,24 @@ void HoleFillDialog::ShowHoles() {
     reroll->setObjectName(QString("reroll_%1").arg(k + 1));
     reroll->setToolTip("Ask the backend for new variations of this hole.");
     connect(reroll, &QPushButton::clicked, this, [this, k] { ReRoll(int(k)); });
-    auto* skip = new QCheckBox("Skip");
+    auto* skip = new QCheckBox(coarse_chosen ? "Skip (auto)" : "Skip");
     skip->setObjectName(QString("skip_%1").arg(k + 1));
     skip->setToolTip("Leave this hole with its smooth coarse fill.");
     skip->setChecked(hv.pick == 0);
+    // Choosing a variation undoes a skip (also the automatic one); skipping clears the choice.
+    connect(list, &QListWidget::currentRowChanged, this, [this, k, skip](int row) {
+      if (row < 0) return;
+      holes_[k].pick = row + 1;
+      skip->setChecked(false);
+    });
     connect(skip, &QCheckBox::toggled, this, [this, k, list](bool on) {
-      holes_[k].pick = on ? 0 : std::max(1, list->currentRow() + 1);
-      list->setEnabled(!on);
+      if (on) {
+        holes_[k].pick = 0;
+        list->setCurrentRow(-1);
+      } else if (holes_[k].pick == 0) {
+        holes_[k].pick = std::max(1, list->currentRow() + 1);
+        list->setCurrentRow(holes_[k].pick - 1);
+      }
     });
     side->addWidget(reroll);
     side->addWidget(skip);

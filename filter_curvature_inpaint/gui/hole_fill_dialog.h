@@ -82,6 +82,8 @@ private:
   QLineEdit* prompt_;
   QLineEdit* negative_prompt_;
   QSpinBox* variations_;
+  QSpinBox* fake_holes_;
+  QDoubleSpinBox* detail_;
   QDoubleSpinBox* similitude_;
   QLineEdit* transformation_constant_;
   QComboBox* mode_;

@@ -7,9 +7,10 @@
 //    field the design notes measured RMS 0.018 against 0.10 for OpenCV's Telea). On real
 //    curvature a membrane term and a weak pull towards flat keep it from overshooting, and
 //    where the hole still shows the coarse fill's curvature, a pull towards that.
-// 3. Add fine detail: the known region's high-pass residual, copied into the hole in
-//    feathered blocks from places chosen by the seed, so each seed gives another variation
-//    with the amplitude of detail the surroundings show.
+// 3. Add detail: a random field, one per seed, with the correlation length of a few of the
+//    patch's vertex spacings (the finest detail the deformed mesh can carry and its curvature
+//    fits can see) and the spread of the known region's own detail at that scale, times the
+//    detail amplitude. Each seed gives another variation.
 #include "inpainter.h"
 
 #include <vcg_ext/curvature_colormap.h>
@@ -200,15 +201,13 @@ double Bilinear(const Field& c, double x, double y) {
          fy * ((1 - fx) * c.at(x0, y1) + fx * c.at(x1, y1));
 }
 
-/// Box blur of the known values only (normalized), `radius` pixels, three passes ~ Gaussian.
-std::vector<double> BlurKnown(const Field& f, int radius) {
-  std::vector<double> val(f.v.size()), wgt(f.v.size());
-  for (size_t i = 0; i < f.v.size(); ++i) val[i] = f.known[i] ? f.v[i] : 0, wgt[i] = f.known[i];
-  auto pass = [&](std::vector<double>& a, bool horizontal) {
+/// Box blur of a w x h array in place, `radius` pixels, three passes each way ~ Gaussian.
+void BoxBlur(std::vector<double>& a, int w, int h, int radius) {
+  auto pass = [&](bool horizontal) {
     std::vector<double> out(a.size());
-    const int len = horizontal ? f.w : f.h, lines = horizontal ? f.h : f.w;
+    const int len = horizontal ? w : h, lines = horizontal ? h : w;
     for (int l = 0; l < lines; ++l) {
-      auto idx = [&](int i) { return horizontal ? size_t(l) * f.w + i : size_t(i) * f.w + l; };
+      auto idx = [&](int i) { return horizontal ? size_t(l) * w + i : size_t(i) * w + l; };
       double acc = 0;
       for (int i = -radius; i <= radius; ++i) acc += a[idx(std::max(0, std::min(len - 1, i)))];
       for (int i = 0; i < len; ++i) {
@@ -219,7 +218,15 @@ std::vector<double> BlurKnown(const Field& f, int radius) {
     a.swap(out);
   };
   for (int k = 0; k < 3; ++k)
-    for (bool hz : {true, false}) pass(val, hz), pass(wgt, hz);
+    for (bool hz : {true, false}) pass(hz);
+}
+
+/// Box blur of the known values only (normalized).
+std::vector<double> BlurKnown(const Field& f, int radius) {
+  std::vector<double> val(f.v.size()), wgt(f.v.size());
+  for (size_t i = 0; i < f.v.size(); ++i) val[i] = f.known[i] ? f.v[i] : 0, wgt[i] = f.known[i];
+  BoxBlur(val, f.w, f.h, radius);
+  BoxBlur(wgt, f.w, f.h, radius);
   for (size_t i = 0; i < val.size(); ++i) val[i] = wgt[i] > 1e-6 ? val[i] / wgt[i] : 0.5;
   return val;
 }
@@ -244,8 +251,12 @@ Field WithoutBorderBand(const Field& f, int width) {
   return g;
 }
 
-std::vector<QImage> InpaintEmbedded(const QImage& image, const QImage& mask,
-                                    const InpaintParams& p) {
+namespace {
+
+/// Variations 1..`variations` of the embedded backend, each at every amplitude of `amplitudes`
+/// (variation-major), from one continuation.
+std::vector<QImage> Complete(const QImage& image, const QImage& mask, const InpaintParams& p,
+                             int variations, const std::vector<double>& amplitudes) {
   Field f = ReadField(image.convertToFormat(QImage::Format_RGB32), mask);
   const int longest = std::max(f.w, f.h);
   const int factor = std::max(1, (longest + 255) / 256);
@@ -264,75 +275,78 @@ std::vector<QImage> InpaintEmbedded(const QImage& image, const QImage& mask,
           base.at(x, y) = Bilinear(coarse, (x + 0.5) / factor - 0.5, (y + 0.5) / factor - 0.5);
   }
 
-  // The known region's fine detail: what a blur of a few pixels removes.
-  const int radius = std::max(2, longest / 128);
-  const std::vector<double> smooth = BlurKnown(f, radius);
-  std::vector<double> residual(f.v.size(), 0.0);
+  // The known region's detail: what a blur over four vertex spacings removes, and how much of
+  // it there is. Finer detail than that is lost twice: between the vertices that sample the
+  // image, and in the APSS fits (several rings wide) that measure curvature.
+  const double spacing = p.detail_scale > 0 ? p.detail_scale : longest / 64.0;
+  const int radius = std::max(2, int(std::lround(4 * spacing)));
+  const std::vector<double> smooth = BlurKnown(solve, radius);
+  double sum = 0, sq = 0;
+  int known_count = 0;
   for (size_t i = 0; i < f.v.size(); ++i)
-    if (f.known[i]) residual[i] = f.v[i] - smooth[i];
-  // Block sources: squares of known pixels only.
-  const int block = std::max(8, 4 * radius);
-  std::vector<std::pair<int, int>> sources;
-  {
-    // Summed-area table of unknown pixels, to test a square in O(1).
-    std::vector<int> sat(size_t(f.w + 1) * (f.h + 1), 0);
-    for (int y = 0; y < f.h; ++y)
-      for (int x = 0; x < f.w; ++x)
-        sat[size_t(y + 1) * (f.w + 1) + x + 1] =
-            !f.is_known(x, y) + sat[size_t(y) * (f.w + 1) + x + 1] +
-            sat[size_t(y + 1) * (f.w + 1) + x] - sat[size_t(y) * (f.w + 1) + x];
-    const int step = std::max(1, block / 4);
-    for (int y = 0; y + block <= f.h; y += step)
-      for (int x = 0; x + block <= f.w; x += step) {
-        const int holes = sat[size_t(y + block) * (f.w + 1) + x + block] -
-                          sat[size_t(y) * (f.w + 1) + x + block] -
-                          sat[size_t(y + block) * (f.w + 1) + x] + sat[size_t(y) * (f.w + 1) + x];
-        if (holes == 0) sources.emplace_back(x, y);
-      }
-  }
-
-  // Hann window: overlapping blocks blend without seams.
-  std::vector<double> hann(block);
-  for (int i = 0; i < block; ++i) hann[i] = std::sin(M_PI * (i + 0.5) / block);
+    if (solve.known[i]) {
+      const double r = f.v[i] - smooth[i];
+      sum += r, sq += r * r, ++known_count;
+    }
+  const double mean_residual = known_count ? sum / known_count : 0.0;
+  const double amplitude =
+      known_count > 1 ? std::sqrt(std::max(0.0, sq / known_count - mean_residual * mean_residual))
+                      : 0.0;
+  // Detail fades in from the hole's border, so the completion meets the known pixels.
+  std::vector<double> inside(f.v.size());
+  for (size_t i = 0; i < f.v.size(); ++i) inside[i] = f.known[i] ? 0.0 : 1.0;
+  BoxBlur(inside, f.w, f.h, std::max(1, radius / 2));
 
   std::vector<QImage> out;
-  for (int variation = 0; variation < p.variations; ++variation) {
-    std::vector<double> detail(f.v.size(), 0.0), weight(f.v.size(), 0.0);
-    if (p.detail > 0 && !sources.empty()) {
+  const double largest = *std::max_element(amplitudes.begin(), amplitudes.end());
+  for (int variation = 0; variation < variations; ++variation) {
+    // A random field with the detail's correlation length, one per seed, scaled to the known
+    // region's spread over the hole.
+    std::vector<double> noise(f.v.size(), 0.0);
+    if (largest > 0 && amplitude > 0) {
       std::mt19937 rng(p.seed + 7919u * uint32_t(variation));
-      std::uniform_int_distribution<size_t> pick(0, sources.size() - 1);
-      const int stride = block / 2;
-      for (int by = -stride; by < f.h; by += stride)
-        for (int bx = -stride; bx < f.w; bx += stride) {
-          bool needed = false;
-          for (int y = std::max(0, by); y < std::min(f.h, by + block) && !needed; ++y)
-            for (int x = std::max(0, bx); x < std::min(f.w, bx + block) && !needed; ++x)
-              needed = !f.is_known(x, y);
-          if (!needed) continue;
-          const auto src = sources[pick(rng)];
-          for (int j = 0; j < block; ++j)
-            for (int i = 0; i < block; ++i) {
-              const int x = bx + i, y = by + j;
-              if (x < 0 || y < 0 || x >= f.w || y >= f.h || f.is_known(x, y)) continue;
-              const double w = hann[i] * hann[j];
-              detail[size_t(y) * f.w + x] +=
-                  w * w * residual[size_t(src.second + j) * f.w + src.first + i];
-              weight[size_t(y) * f.w + x] += w * w;
-            }
-        }
+      std::normal_distribution<double> normal;
+      for (double& x : noise) x = normal(rng);
+      BoxBlur(noise, f.w, f.h, std::max(1, radius / 2));
+      double nsum = 0, nsq = 0;
+      int n = 0;
+      for (size_t i = 0; i < f.v.size(); ++i)
+        if (!f.known[i]) nsum += noise[i], nsq += noise[i] * noise[i], ++n;
+      const double mean = n ? nsum / n : 0;
+      const double sd = n > 1 ? std::sqrt(std::max(1e-300, nsq / n - mean * mean)) : 1;
+      for (size_t i = 0; i < f.v.size(); ++i)
+        noise[i] = f.known[i] ? 0.0
+                              : (noise[i] - mean) / sd * amplitude *
+                                    std::max(0.0, std::min(1.0, 2 * inside[i] - 1));
     }
-    QImage result(f.w, f.h, QImage::Format_RGB32);
-    for (int y = 0; y < f.h; ++y)
-      for (int x = 0; x < f.w; ++x) {
-        const size_t i = size_t(y) * f.w + x;
-        double t = base.v[i];
-        if (!f.known[i] && weight[i] > 0) t += p.detail * detail[i] / weight[i];
-        const vcg_ext::Rgb8 c = vcg_ext::CurvatureColormap::Color8(t);
-        result.setPixel(x, y, qRgb(c.r, c.g, c.b));
-      }
-    out.push_back(result);
+    for (double a : amplitudes) {
+      QImage result(f.w, f.h, QImage::Format_RGB32);
+      for (int y = 0; y < f.h; ++y)
+        for (int x = 0; x < f.w; ++x) {
+          const size_t i = size_t(y) * f.w + x;
+          double t = base.v[i];
+          if (!f.known[i]) t += a * noise[i];
+          const vcg_ext::Rgb8 c = vcg_ext::CurvatureColormap::Color8(t);
+          result.setPixel(x, y, qRgb(c.r, c.g, c.b));
+        }
+      out.push_back(result);
+    }
   }
   return out;
+}
+
+} // namespace
+
+std::vector<QImage> InpaintEmbedded(const QImage& image, const QImage& mask,
+                                    const InpaintParams& p) {
+  return Complete(image, mask, p, p.variations, {p.detail});
+}
+
+std::vector<QImage> InpaintEmbeddedAmplitudes(const QImage& image, const QImage& mask,
+                                              const InpaintParams& p,
+                                              const std::vector<double>& amplitudes) {
+  if (amplitudes.empty()) return {};
+  return Complete(image, mask, p, 1, amplitudes);
 }
 
 } // namespace curvature_inpaint

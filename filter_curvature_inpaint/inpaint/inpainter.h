@@ -25,8 +25,11 @@ struct InpaintParams {
   std::string negative_prompt;
   int variations = 4;
   uint32_t seed = 1;
-  int size = 0;              ///< service-side image size; 0: the backend's default
-  double detail = 1.0;       ///< embedded: amplitude of the synthesised fine detail
+  int size = 0;        ///< service-side image size; 0: the backend's default
+  double detail = 1.0; ///< embedded: amplitude of the synthesised detail
+  /// embedded: the detail's scale, pixels (the spacing of the patch's vertices in the image,
+  /// which the pipeline knows per hole); 0: 1/64 of the image's side
+  double detail_scale = 0;
   std::string workflow_file; ///< comfyui: an edited workflow; empty: the shipped one
   HttpOptions http;
 };
@@ -67,5 +70,11 @@ std::vector<QImage> Inpaint(const QImage& image, const QImage& mask, const Inpai
 /// synthesised from the known region (embedded_inpainter.cpp).
 std::vector<QImage> InpaintEmbedded(const QImage& image, const QImage& mask,
                                     const InpaintParams& params);
+
+/// The embedded backend's first variation at each detail amplitude (params.detail ignored),
+/// from one continuation: what the fake-hole validation compares. Same size as `image`.
+std::vector<QImage> InpaintEmbeddedAmplitudes(const QImage& image, const QImage& mask,
+                                              const InpaintParams& params,
+                                              const std::vector<double>& amplitudes);
 
 } // namespace curvature_inpaint

@@ -1,0 +1,223 @@
+#!/usr/bin/env python3
+"""The held-out hole benchmark (bench/holes.tsv): the whole method against CGAL's filler and
+MeshLab's Close Holes, hole by hole, on one half of the table.
+
+    python3 bench/run_holdout_bench.py [--split test|tuning] [--plots] [--oracle]
+                                       [--sweep-detail 0,0.5,1,2] [--variant "NAME=ARGS"]...
+                                       [-- FILL ARGS...]
+
+Per hole: hole-region RMS (mean of both directions) and Hausdorff distance (the larger of
+both maxima), each as a ratio to CGAL's on the same hole (below 1: closer to the ground truth
+than CGAL); the detail ratio (bench_tools metrics: APSS curvature spread of the fill over the
+ground truth's, 1 is the truth's); the mean normal deviation; the whole process time; whether
+the result is watertight and manifold and every input vertex kept bit for bit. --oracle adds
+`fill --oracle` (the curvature image painted from the ground truth: the ceiling of any
+inpainter) with its per-stage curvature spreads. --sweep-detail runs `fill --detail A` for each
+A (choose the default on the tuning half); --variant runs `fill ARGS` as a column NAME ({gt} in
+ARGS is the hole's ground truth). --plots writes docs/holdout_rms_ratio.png and
+docs/holdout_detail_vs_rms.png (gnuplot). FILL ARGS go to every `fill` run.
+"""
+import json
+import os
+import random
+import re
+import statistics
+import sys
+import tempfile
+import shutil
+import time
+
+from run_coarse_bench import BIN, CLOSE_HOLES, ROOT, SHARED, build, meshlab_prefix, sh
+
+DOCS = os.path.join(ROOT, "docs")
+TOOL = os.path.join(BIN, "curvature-inpaint")
+BENCH = os.path.join(BIN, "bench_tools")
+
+
+def holes(split):
+    with open(os.path.join(ROOT, "bench", "holes.tsv")) as f:
+        for line in f:
+            if line.startswith("#") or line.startswith("mesh\t") or not line.strip():
+                continue
+            mesh, seed, frac, half = line.rstrip("\n").split("\t")
+            if half == split:
+                yield mesh, int(seed), frac
+
+
+def info(path):
+    out = sh([TOOL, "info", path]).stdout
+    return {k: int(v) for k, v in re.findall(r"^(\w+) (\d+)$", out, re.M)}
+
+
+def punch(tmp, mesh, seed, frac):
+    """The hole of one row: the first draw of the row's generator that cuts a single loop."""
+    gt = os.path.join(SHARED, "meshes", mesh)
+    n = info(gt)["vertices"]
+    rng = random.Random(seed)
+    out = os.path.join(tmp, f"{os.path.splitext(mesh)[0]}_{seed}.ply")
+    for _ in range(50):
+        v = rng.randrange(n)
+        sh([TOOL, "punch", gt, out, "--seed-vertex", str(v), "--radius-frac", frac])
+        i = info(out)
+        if i["holes"] == 1 and i["non_manifold_edges"] == 0:
+            return gt, out, v
+    raise RuntimeError(f"{mesh} seed {seed}: no single-loop hole in 50 draws")
+
+
+def measure(gt, inp, out, seconds):
+    m = json.loads(sh([BENCH, "metrics", gt, inp, out]).stdout)
+    kept = json.loads(sh([BENCH, "kept", inp, out]).stdout)
+    a, b = m["gt_to_result"], m["result_to_gt"]
+    return {"rms": (a["rms"] + b["rms"]) / 2, "hausdorff": max(a["max"], b["max"]),
+            "detail": m["detail_ratio"], "normal": m["normal_deviation_deg"], "seconds": seconds,
+            "watertight": m["holes_left"] == 0 and m["non_manifold_edges"] == 0,
+            "kept": kept["moved"] == 0}
+
+
+def timed(args):
+    start = time.perf_counter()
+    r = sh(args)
+    return r, time.perf_counter() - start
+
+
+def plot_bars(path, rows):
+    data = path + ".dat"
+    with open(data, "w") as f:
+        for i, r in enumerate(rows):
+            f.write(f"{i} {r['name']} {r['fill']['rms'] / r['cgal']['rms']:.4f} "
+                    f"{r['close']['rms'] / r['cgal']['rms']:.4f}\n")
+    script = "\n".join([
+        "set terminal pngcairo size 1100,520 font 'DejaVu Sans,11'", "set termoption noenhanced",
+        f"set output '{path}'", "set title 'Held-out holes (test half): hole-region RMS relative to CGAL'",
+        "set ylabel 'RMS / CGAL RMS (below 1: closer to the ground truth)'", "set style data histogram",
+        "set style histogram cluster gap 1", "set style fill solid 0.8 border -1", "set boxwidth 0.9",
+        "set xtics rotate by -45 scale 0", "set grid ytics", "set key top left",
+        "set arrow from graph 0, first 1 to graph 1, first 1 nohead dt 2 lw 2",
+        f"plot '{data}' using 3:xtic(2) title 'curvature-inpaint fill', '' using 4 title 'MeshLab Close Holes'"])
+    run_gnuplot(script)
+    os.remove(data)
+
+
+def plot_scatter(path, rows):
+    data = path + ".dat"
+    with open(data, "w") as f:
+        for key in ("fill", "cgal", "close"):
+            f.write(f"# {key}\n")
+            for r in rows:
+                f.write(f"{r[key]['rms'] / r['cgal']['rms']:.4f} {r[key]['detail']:.4f}\n")
+            f.write("\n\n")
+    script = "\n".join([
+        "set terminal pngcairo size 900,620 font 'DejaVu Sans,11'", "set termoption noenhanced",
+        f"set output '{path}'", "set title 'Held-out holes (test half): detail against distance'",
+        "set xlabel 'hole-region RMS / CGAL RMS'", "set ylabel 'detail ratio (1: the ground truth)'",
+        "set grid", "set key outside right", "set logscale x",
+        "set arrow from graph 0, first 1 to graph 1, first 1 nohead dt 2",
+        f"plot '{data}' index 0 with points pt 7 ps 1.5 title 'curvature-inpaint fill', "
+        f"'' index 1 with points pt 5 ps 1.2 title 'CGAL', '' index 2 with points pt 9 ps 1.5 title 'Close Holes'"])
+    run_gnuplot(script)
+    os.remove(data)
+
+
+def run_gnuplot(script):
+    import subprocess
+    if not shutil.which("gnuplot"):
+        prefix = [] if os.geteuid() == 0 else ["sudo"]
+        sh(prefix + ["apt-get", "install", "-y", "-qq", "--no-install-recommends", "gnuplot-nox"],
+           env=dict(os.environ, DEBIAN_FRONTEND="noninteractive"))
+    subprocess.run(["gnuplot"], input=script, text=True, check=True)
+
+
+def summary(label, rows, key):
+    ratios = [r[key]["rms"] / r["cgal"]["rms"] for r in rows]
+    haus = [r[key]["hausdorff"] / r["cgal"]["hausdorff"] for r in rows]
+    return (f"| {label} | {sum(x < 1 for x in ratios)} of {len(rows)} | {statistics.median(ratios):.3f} | "
+            f"{sum(x <= 1 for x in haus)} of {len(rows)} | {statistics.mean(r[key]['detail'] for r in rows):.2f} | "
+            f"{all(r[key]['watertight'] for r in rows)} | {all(r[key]['kept'] for r in rows)} | "
+            f"{statistics.median(r[key]['seconds'] for r in rows):.2f} |")
+
+
+def main():
+    argv = sys.argv[1:]
+    fill_args = argv[argv.index("--") + 1:] if "--" in argv else []
+    argv = argv[:argv.index("--")] if "--" in argv else argv
+    split = argv[argv.index("--split") + 1] if "--split" in argv else "test"
+    sweep = [a for a in argv[argv.index("--sweep-detail") + 1].split(",")] if "--sweep-detail" in argv else []
+    oracle = "--oracle" in argv
+    variants = [argv[i + 1].split("=", 1) for i, a in enumerate(argv) if a == "--variant"]
+    build()
+    tmp = tempfile.mkdtemp(prefix="holdout-bench-")
+    rows = []
+    try:
+        server = os.path.join(meshlab_prefix(os.path.join(tmp, "prefix")), "meshlabserver")
+        script = os.path.join(tmp, "close_holes.mlx")
+        with open(script, "w") as f:
+            f.write(CLOSE_HOLES)
+        for mesh, seed, frac in holes(split):
+            gt, inp, v = punch(tmp, mesh, seed, frac)
+            out = os.path.join(tmp, "out.ply")
+            row = {"name": f"{os.path.splitext(mesh)[0]}_{seed}", "vertex": v, "frac": frac,
+                   "edges": sh([TOOL, "info", inp]).stdout.split("hole_edges")[1].split()[0]}
+            _, s = timed([TOOL, "coarse", inp, out])
+            row["coarse"] = measure(gt, inp, out, s)
+            report = os.path.join(tmp, "report.json")
+            r, s = timed([TOOL, "fill", inp, out, "--report", report, *fill_args])
+            row["fill"] = measure(gt, inp, out, s)
+            row["fill_report"] = json.load(open(report))["holes"]
+            for a in sweep:
+                _, s = timed([TOOL, "fill", inp, out, "--detail", a, *fill_args])
+                row[f"detail {a}"] = measure(gt, inp, out, s)
+            for vname, vargs in variants:
+                _, s = timed([TOOL, "fill", inp, out, *vargs.replace("{gt}", gt).split()])
+                row[vname] = measure(gt, inp, out, s)
+            if oracle:
+                _, s = timed([TOOL, "fill", inp, out, "--oracle", gt, "--report", report, *fill_args])
+                row["oracle"] = measure(gt, inp, out, s)
+                row["oracle_spread"] = json.load(open(report))["holes"][0].get("curvature_spread", {})
+            _, s = timed([os.path.join(BIN, "cgal_fill"), inp, out])
+            row["cgal"] = measure(gt, inp, out, s)
+            _, s = timed(["xvfb-run", "-a", server, "-i", inp, "-o", out, "-s", script])
+            row["close"] = measure(gt, inp, out, s)
+            rows.append(row)
+            print(f"{row['name']} done", file=sys.stderr, flush=True)
+        with open(os.path.join(ROOT, "build-bench", f"holdout_{split}.json"), "w") as f:
+            json.dump(rows, f, indent=1)
+
+        print(f"\nPer hole ({split} half): RMS and Hausdorff as ratios to CGAL's; detail ratio; "
+              "normal deviation (°); process s\n")
+        methods = (["coarse", "fill"] + (["oracle"] if oracle else []) + [f"detail {a}" for a in sweep] +
+                   [v[0] for v in variants] + ["close"])
+        print("| hole | edges | CGAL RMS / Hausdorff (% diag) | " +
+              " | ".join(methods) + " |")
+        print("|" + "---|" * (3 + len(methods)))
+        for r in rows:
+            c = r["cgal"]
+            cells = [f"{r[k]['rms'] / c['rms']:.2f} / {r[k]['hausdorff'] / c['hausdorff']:.2f} / "
+                     f"{r[k]['detail']:.2f} / {r[k]['normal']:.1f}° / {r[k]['seconds']:.2f} s" for k in methods]
+            print(f"| {r['name']} | {r['edges']} | {c['rms']:.3f} / {c['hausdorff']:.2f} (detail {c['detail']:.2f}, "
+                  f"{c['seconds']:.2f} s) | " + " | ".join(cells) + " |")
+        print("\nSummary: holes with lower RMS than CGAL, median RMS ratio, holes with Hausdorff ≤ CGAL's, "
+              "mean detail ratio, all watertight and manifold, every input vertex kept, median process s\n")
+        print("| method | RMS < CGAL | median RMS ratio | Hausdorff ≤ CGAL | mean detail | watertight | kept | s |")
+        print("|---|---|---|---|---|---|---|---|")
+        for k in methods + ["cgal"]:
+            print(summary(k, rows, k))
+        if oracle:
+            print("\nOracle: curvature spread carried per stage, as a fraction of the ground truth's "
+                  "(image: its hole pixels; target: at the fill's vertices; result: the deformed fill)\n")
+            print("| hole | image | target | result | mesh detail ratio |")
+            print("|---|---|---|---|---|")
+            for r in rows:
+                sp = r["oracle_spread"]
+                t = sp.get("truth") or 0
+                if t > 0:
+                    print(f"| {r['name']} | {sp['truth_image'] / t:.2f} | {sp['target'] / t:.2f} | "
+                          f"{sp['result'] / t:.2f} | {r['oracle']['detail']:.2f} |")
+        if "--plots" in argv:
+            plot_bars(os.path.join(DOCS, "holdout_rms_ratio.png"), rows)
+            plot_scatter(os.path.join(DOCS, "holdout_detail_vs_rms.png"), rows)
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    main()

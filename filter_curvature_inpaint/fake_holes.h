@@ -1,0 +1,55 @@
+// Fake holes for validation: holes of a real hole's size cut into known surface near it, so
+// that every way of filling it can be scored against the surface that was cut out, and the
+// real hole filled the way that validated best (the choice learned "self-prior" fillers make
+// without ground truth).
+#pragma once
+
+#include <common/ml_mesh_type.h>
+#include <vcg_ext/coarse_fill.h>
+#include <vcg_ext/hole_segmentation.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace curvature_inpaint {
+
+/// One fake hole: a piece of known surface around it (`truth`), the same piece with the hole
+/// cut (`holed`: the hole and the piece's own outer border are its only loops), and the cut
+/// surface in `holed`'s unit box.
+struct FakeHole {
+  CMeshO truth, holed;
+  std::vector<std::array<Eigen::Vector3d, 3>> cut;  ///< the removed triangles, unit box of holed
+  double radius = 0;                                ///< of the hole, unit box of holed
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero(); ///< of the hole, the mesh's units
+};
+
+struct FakeHoleParams {
+  int count = 4;         ///< fake holes per real hole
+  double piece = 3;      ///< radius of the piece around a fake hole, in hole radii
+  double farthest = 10;  ///< fake holes lie within this many hole radii of the real one
+  int max_attempts = 48; ///< places tried per real hole
+  uint32_t seed = 1;
+};
+
+/// Cuts up to `params.count` fake holes of the size of hole `hole` of `coarse` into the scan
+/// faces of `m` (after its coarse fill; `vf` its vertex-face adjacency). A fake hole and the
+/// piece around it never overlap a real hole (filled or not), another fake's piece, or the
+/// mesh's border; places are tried in an order fixed by the seed and the hole, so the result
+/// does not depend on threads. Fewer (or none) where there is no room: `why` says so.
+std::vector<std::unique_ptr<FakeHole>> CutFakeHoles(const CMeshO& m, const vcg_ext::VertexFaces& vf,
+                                                    const vcg_ext::CoarseFillResult& coarse,
+                                                    int hole, const FakeHoleParams& params,
+                                                    std::string* why);
+
+/// The hole-region RMS distance (both directions, from triangle centres) between a
+/// fill (`points`, with `triangles` the fill's) and the surface cut out, in the units of the
+/// points.
+double FakeHoleError(const FakeHole& fake, const std::vector<Eigen::Vector3d>& points,
+                     const std::vector<std::array<int, 3>>& triangles);
+
+} // namespace curvature_inpaint

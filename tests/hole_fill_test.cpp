@@ -1,0 +1,256 @@
+// The whole method on MeshLab's mesh type: the ground-truth oracle through the chain, the
+// detail amplitude, the fake holes and their validation.
+#include "fake_holes.h"
+#include "hole_fill.h"
+#include "pipeline.h"
+
+#include <vcg/complex/algorithms/create/platonic.h>
+#include <vcg_ext/punch_hole.h>
+
+#include <QGuiApplication>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace {
+
+using curvature_inpaint::FillHoles;
+using curvature_inpaint::HoleFillParams;
+
+// Bumps whose tip curvature (1 + 2 h / w^2) the colour map's range can hold.
+const double kBumpHeight = 0.025, kBumpWidth = 0.2;
+
+/// Directions of the bumps: three close together (the hole's), the rest spread.
+std::vector<Eigen::Vector3d> BumpDirections() {
+  std::vector<Eigen::Vector3d> d{{1, 0.2, 0}, {1, -0.1, 0.18}, {1, -0.1, -0.18},
+                                 {0, 1, 0},   {0, -1, 0},      {0, 0, 1},
+                                 {0, 0, -1},  {-1, 0, 0},      {-0.5, 0.7, 0.5}};
+  for (auto& x : d) x.normalize();
+  return d;
+}
+
+/// Unit sphere carrying Gaussian bumps of height kBumpHeight (radially).
+void MakeBumpySphere(CMeshO& m, int subdiv = 5) {
+  vcg::tri::Sphere(m, subdiv);
+  for (auto& v : m.vert) {
+    const Eigen::Vector3d p = Eigen::Vector3d(v.P()[0], v.P()[1], v.P()[2]).normalized();
+    double r = 1;
+    for (const auto& d : BumpDirections())
+      r += kBumpHeight * std::exp(-(p - d).squaredNorm() / (kBumpWidth * kBumpWidth));
+    v.P() = Point3m(Scalarm(r * p.x()), Scalarm(r * p.y()), Scalarm(r * p.z()));
+  }
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+  vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
+}
+
+/// The sphere with the hole through the first three bumps.
+void PunchThreeBumps(CMeshO& m) {
+  vcg_ext::PunchHole(m, Point3m(1.02f, 0, 0), Scalarm(0.45));
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+}
+
+/// Height above the unit sphere of the fill at each of the three bumps' tips.
+std::vector<double> BumpHeights(const CMeshO& m, size_t first_new_vertex) {
+  std::vector<double> heights;
+  for (int b = 0; b < 3; ++b) {
+    const Eigen::Vector3d d = BumpDirections()[size_t(b)];
+    double best = -1, height = 0;
+    for (size_t v = first_new_vertex; v < m.vert.size(); ++v) {
+      const Eigen::Vector3d p(m.vert[v].cP()[0], m.vert[v].cP()[1], m.vert[v].cP()[2]);
+      const double c = p.normalized().dot(d);
+      if (c > best) best = c, height = p.norm() - 1;
+    }
+    heights.push_back(height);
+  }
+  return heights;
+}
+
+HoleFillParams SmallImages() {
+  HoleFillParams p;
+  p.images.image_size = 256;
+  p.inpaint.variations = 2;
+  p.measure_detail = true;
+  return p;
+}
+
+TEST(GroundTruthOracle, TheFillBringsBackEveryBumpOfTheTruth) {
+  CMeshO truth, m;
+  MakeBumpySphere(truth);
+  curvature_inpaint::CopyMesh(truth, m);
+  PunchThreeBumps(m);
+  const size_t scan_vertices = m.vert.size();
+  HoleFillParams p = SmallImages();
+  const curvature_inpaint::GroundTruthOracle oracle(truth, m, p.images);
+  p.oracle = &oracle;
+
+  CMeshO coarse;
+  curvature_inpaint::CopyMesh(m, coarse);
+  curvature_inpaint::CoarseFill(coarse, p.images.coarse);
+  for (double h : BumpHeights(coarse, scan_vertices))
+    EXPECT_LT(h, 0.5 * kBumpHeight) << "the smooth cap should miss the bumps";
+
+  const auto result = FillHoles(m, p);
+  ASSERT_EQ(result.holes.size(), 1u);
+  const auto& r = result.holes[0];
+  ASSERT_TRUE(r.problem.empty()) << r.problem;
+  for (double h : BumpHeights(m, scan_vertices)) EXPECT_NEAR(h, kBumpHeight, 0.2 * kBumpHeight);
+  ASSERT_GT(r.truth_spread.truth, 0);
+  EXPECT_GE(r.result_spread / r.truth_spread.truth, 0.8)
+      << "image " << r.truth_spread.image << ", target " << r.target_spread << ", result "
+      << r.result_spread << ", truth " << r.truth_spread.truth;
+}
+
+TEST(Detail, TheAmplitudeChangesTheFillAndZeroIsTheSmoothContinuation) {
+  CMeshO truth;
+  MakeBumpySphere(truth);
+  std::vector<std::vector<Point3m>> fills;
+  std::vector<double> spreads;
+  for (double detail : {0.0, 2.0}) {
+    CMeshO m;
+    curvature_inpaint::CopyMesh(truth, m);
+    PunchThreeBumps(m);
+    const size_t scan_vertices = m.vert.size();
+    HoleFillParams p = SmallImages();
+    p.validation.fake_holes = 0;
+    p.inpaint.detail = detail;
+    CMeshO preview;
+    curvature_inpaint::CopyMesh(m, preview);
+    const auto holes = curvature_inpaint::InpaintHoles(preview, p);
+    ASSERT_EQ(holes.size(), 1u);
+    ASSERT_EQ(holes[0].variations.size(), 2u);
+    if (detail == 0)
+      EXPECT_EQ(holes[0].variations[0], holes[0].variations[1]) << "no detail, nothing random";
+    else
+      EXPECT_NE(holes[0].variations[0], holes[0].variations[1]) << "each seed its own detail";
+    const auto result = FillHoles(m, p);
+    ASSERT_TRUE(result.holes[0].problem.empty()) << result.holes[0].problem;
+    fills.emplace_back();
+    for (size_t v = scan_vertices; v < m.vert.size(); ++v) fills.back().push_back(m.vert[v].cP());
+    spreads.push_back(result.holes[0].result_spread);
+  }
+  ASSERT_EQ(fills[0].size(), fills[1].size());
+  double largest = 0;
+  for (size_t i = 0; i < fills[0].size(); ++i)
+    largest = std::max(largest, double(vcg::Distance(fills[0][i], fills[1][i])));
+  EXPECT_GT(largest, 0.05 * kBumpHeight) << "detail 2 should move the fill";
+  EXPECT_GT(spreads[1], 1.1 * spreads[0]) << "more detail, more curvature spread";
+}
+
+/// Centre and radius of a loop's vertices.
+std::pair<Eigen::Vector3d, double> LoopBall(const CMeshO& m, const std::vector<int>& loop) {
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (int v : loop) c += Eigen::Vector3d(m.vert[v].cP()[0], m.vert[v].cP()[1], m.vert[v].cP()[2]);
+  c /= double(loop.size());
+  double r = 0;
+  for (int v : loop)
+    r = std::max(
+        r, (Eigen::Vector3d(m.vert[v].cP()[0], m.vert[v].cP()[1], m.vert[v].cP()[2]) - c).norm());
+  return {c, r};
+}
+
+TEST(FakeHoles, NeverOverlapARealHoleEachOtherOrTheBorder) {
+  // A wavy open sheet (its outer border is no hole) with two real holes.
+  CMeshO m;
+  vcg::tri::Grid(m, 121, 121, 6.0f, 6.0f); // [0, 6]^2
+  for (auto& v : m.vert) {
+    v.P()[0] -= 3, v.P()[1] -= 3;
+    v.P()[2] = 0.2f * std::sin(2 * v.P()[0]) * std::cos(1.5f * v.P()[1]);
+  }
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+  for (const Point3m at : {Point3m(-0.5f, -0.5f, 0), Point3m(0.7f, 0.4f, 0)}) {
+    Point3m on = m.vert[0].cP();
+    for (const auto& v : m.vert)
+      if (std::hypot(v.cP()[0] - at[0], v.cP()[1] - at[1]) <
+          std::hypot(on[0] - at[0], on[1] - at[1]))
+        on = v.cP();
+    vcg_ext::PunchHole(m, on, Scalarm(0.25));
+  }
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+  vcg_ext::CoarseFillParams cp;
+  cp.keep_longest_open = true;
+  const auto coarse = curvature_inpaint::CoarseFill(m, cp);
+  ASSERT_EQ(coarse.FilledCount(), 2);
+  const vcg_ext::VertexFaces vf(m);
+  for (int hole = 0; hole < int(coarse.holes.size()); ++hole) {
+    if (!coarse.holes[size_t(hole)].filled) continue;
+    curvature_inpaint::FakeHoleParams fp;
+    std::string why;
+    const auto fakes = curvature_inpaint::CutFakeHoles(m, vf, coarse, hole, fp, &why);
+    EXPECT_EQ(int(fakes.size()), fp.count) << why;
+    const auto own = LoopBall(m, coarse.holes[size_t(hole)].loop);
+    const double piece = fp.piece * own.second;
+    for (size_t i = 0; i < fakes.size(); ++i) {
+      for (const auto& h : coarse.holes)
+        if (h.filled) {
+          const auto ball = LoopBall(m, h.loop);
+          EXPECT_GT((fakes[i]->centre - ball.first).norm(), piece + ball.second);
+        }
+      for (size_t j = 0; j < i; ++j)
+        EXPECT_GT((fakes[i]->centre - fakes[j]->centre).norm(), 2 * piece);
+      // No vertex of the piece on the sheet's border.
+      for (const auto& v : fakes[i]->truth.vert) {
+        EXPECT_LT(std::abs(v.cP()[0]), 2.99f);
+        EXPECT_LT(std::abs(v.cP()[1]), 2.99f);
+      }
+      EXPECT_EQ(curvature_inpaint::CountHoles(fakes[i]->holed).loop_edges.size(), 2u);
+      EXPECT_FALSE(fakes[i]->cut.empty());
+    }
+  }
+}
+
+TEST(FakeHoles, ASmallClosedPartFallsBackToTheVariationScoreAndSaysSo) {
+  CMeshO m;
+  vcg::tri::Sphere(m, 4);
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+  vcg_ext::PunchHole(m, Point3m(1, 0, 0), Scalarm(0.5)); // a hole a quarter of the part wide
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+  HoleFillParams p = SmallImages();
+  const auto result = FillHoles(m, p);
+  ASSERT_EQ(result.holes.size(), 1u);
+  const auto& r = result.holes[0];
+  EXPECT_TRUE(r.candidates.empty());
+  EXPECT_NE(r.validation_note.find("no room"), std::string::npos) << r.validation_note;
+  EXPECT_NE(r.validation_note.find("variation score"), std::string::npos) << r.validation_note;
+  EXPECT_TRUE(r.problem.empty()) << r.problem;
+  EXPECT_GE(r.pick, 1);
+  const auto census = curvature_inpaint::CountHoles(m);
+  EXPECT_TRUE(census.loop_edges.empty());
+}
+
+TEST(FakeHoles, TheValidatedChoiceIsTheSameForAnyThreadCount) {
+  CMeshO truth;
+  MakeBumpySphere(truth);
+  std::vector<std::vector<Point3m>> results;
+  std::vector<std::vector<std::string>> choices;
+  for (int threads : {1, 2}) {
+    CMeshO m;
+    curvature_inpaint::CopyMesh(truth, m);
+    for (const Point3m at : {Point3m(1.02f, 0, 0), Point3m(-1, 0.1f, 0), Point3m(0, 0.1f, -1)})
+      vcg_ext::PunchHole(m, at, Scalarm(0.12));
+    vcg::tri::UpdateBounding<CMeshO>::Box(m);
+    HoleFillParams p = SmallImages();
+    p.images.coarse.threads = threads;
+    const auto result = FillHoles(m, p);
+    choices.emplace_back();
+    for (const auto& h : result.holes) {
+      ASSERT_FALSE(h.candidates.empty()) << h.validation_note;
+      choices.back().push_back(h.candidates[size_t(h.choice)]);
+    }
+    results.emplace_back();
+    for (const auto& v : m.vert) results.back().push_back(v.cP());
+  }
+  EXPECT_EQ(choices[0], choices[1]);
+  ASSERT_EQ(results[0].size(), results[1].size());
+  for (size_t i = 0; i < results[0].size(); ++i) ASSERT_EQ(results[0][i], results[1][i]) << i;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  // QImage needs no display, but the pipeline's image code expects an application.
+  qputenv("QT_QPA_PLATFORM", "offscreen");
+  QGuiApplication app(argc, argv);
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
