@@ -2,10 +2,15 @@
 //   bench_tools metrics GROUND_TRUTH INPUT RESULT   distances in and around the filled region
 //   bench_tools subdivide IN OUT                    one midpoint (1-to-4) subdivision
 //   bench_tools kept INPUT RESULT                   input vertices the result moved
+//   bench_tools render MESH PNG CX CY CZ R [VX VY VZ [CURVATURE_SCALE]]
+//                                                   a view of the faces within R of C
+//   bench_tools side-by-side OUT PNG...             panels left to right
 #include "curvature_images.h"
 #include "ground_truth_image.h"
 #include "mesh_io.h"
 #include "pipeline.h"
+
+#include <vcg_ext/curvature_colormap.h>
 
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/algorithms/closest.h>
@@ -260,6 +265,26 @@ int PunchMany(const std::string& in, const std::string& out, int count, double m
   return 0;
 }
 
+// The images side by side, left to right, with a gap: the panels of one picture.
+int SideBySide(const std::string& out, const std::vector<std::string>& panels) {
+  std::vector<QImage> images;
+  int w = 0, h = 0;
+  for (const auto& p : panels) {
+    images.emplace_back(QString::fromStdString(p));
+    if (images.back().isNull()) throw std::runtime_error("cannot read " + p);
+    w += images.back().width() + 8, h = std::max(h, images.back().height());
+  }
+  QImage all(w - 8, h, QImage::Format_RGB32);
+  all.fill(QColor(255, 255, 255));
+  int x = 0;
+  for (const auto& img : images) {
+    for (int y = 0; y < img.height(); ++y)
+      for (int i = 0; i < img.width(); ++i) all.setPixel(x + i, y, img.pixel(i, y));
+    x += img.width() + 8;
+  }
+  return all.save(QString::fromStdString(out)) ? 0 : 1;
+}
+
 int Append(const std::string& a_path, const std::string& b_path, const std::string& out) {
   CMeshO a, b;
   curvature_inpaint::LoadMesh(a_path, a);
@@ -274,10 +299,37 @@ int Append(const std::string& a_path, const std::string& b_path, const std::stri
 // Flat-shaded orthographic view of the faces within `radius` of `center`, looking along -view
 // (default: the mean normal there): for looking at fills side by side.
 int Render(const std::string& in, const std::string& png, const Point3m& center, double radius,
-           Point3m view) {
+           Point3m view, double curvature_scale) {
   CMeshO m;
   curvature_inpaint::LoadMesh(in, m);
   vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
+  vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
+  // With a curvature scale: every face in the mean-curvature colours of the curvature images
+  // (value 0.5 + 0.5 H / scale), shaded; a negative scale is taken from the region itself
+  // (its 95th percentile of |H|) and printed, so the other panels can share it.
+  std::vector<double> value(m.vert.size(), 0.5);
+  if (curvature_scale != 0) {
+    std::vector<Eigen::Vector3d> points, normals;
+    std::vector<int> index(m.vert.size(), -1), query;
+    for (size_t v = 0; v < m.vert.size(); ++v) {
+      if (vcg::Distance(m.vert[v].cP(), center) > 1.3 * radius) continue;
+      index[v] = int(points.size());
+      query.push_back(int(points.size()));
+      points.emplace_back(m.vert[v].cP()[0], m.vert[v].cP()[1], m.vert[v].cP()[2]);
+      normals.emplace_back(m.vert[v].cN()[0], m.vert[v].cN()[1], m.vert[v].cN()[2]);
+    }
+    const std::vector<double> h = vcg_ext::ApssMeanCurvature(points, normals, query);
+    if (curvature_scale < 0) {
+      std::vector<double> a;
+      for (double x : h)
+        if (std::isfinite(x)) a.push_back(std::abs(x));
+      std::sort(a.begin(), a.end());
+      curvature_scale = a.empty() ? 1.0 : std::max(1e-12, a[a.size() * 95 / 100]);
+    }
+    for (size_t v = 0; v < m.vert.size(); ++v)
+      if (index[v] >= 0 && std::isfinite(h[size_t(index[v])]))
+        value[v] = std::max(0.0, std::min(1.0, 0.5 + 0.5 * h[size_t(index[v])] / curvature_scale));
+  }
   std::vector<const CFaceO*> near;
   const bool view_given = view.Norm() > 0;
   for (const auto& f : m.face) {
@@ -287,6 +339,8 @@ int Render(const std::string& in, const std::string& png, const Point3m& center,
     if (!view_given && vcg::Distance(c, center) < radius / 2) view += vcg::TriangleNormal(f);
   }
   view.Normalize();
+  std::printf("{\"view\": [%.6f, %.6f, %.6f], \"curvature_scale\": %.6g}\n", view[0], view[1],
+              view[2], curvature_scale);
   Point3m up = std::abs(view[1]) < 0.9 ? Point3m(0, 1, 0) : Point3m(1, 0, 0);
   Point3m right = (up ^ view).Normalize();
   up = (view ^ right).Normalize();
@@ -305,6 +359,14 @@ int Render(const std::string& in, const std::string& png, const Point3m& center,
     }
     const double shade = std::max(0.0, double(f->cN() * light));
     const int g = int(40 + 200 * shade);
+    QRgb colour = 0;
+    if (curvature_scale != 0) {
+      double t = 0;
+      for (int k = 0; k < 3; ++k) t += value[vcg::tri::Index(m, f->cV(k))] / 3;
+      const vcg_ext::Rgb8 c = vcg_ext::CurvatureColormap::Color8(t);
+      const double light_level = 0.35 + 0.65 * shade;
+      colour = qRgb(int(c.r * light_level), int(c.g * light_level), int(c.b * light_level));
+    }
     const int x0 = std::max(0, int(std::floor(std::min({sx[0], sx[1], sx[2]}))));
     const int x1 = std::min(size - 1, int(std::ceil(std::max({sx[0], sx[1], sx[2]}))));
     const int y0 = std::max(0, int(std::floor(std::min({sy[0], sy[1], sy[2]}))));
@@ -323,7 +385,7 @@ int Render(const std::string& in, const std::string& png, const Point3m& center,
         depth[y * size + x] = z;
         const bool edge = std::getenv("RENDER_EDGES") && std::min({w0, w1, w2}) < 0.04;
         const int s = edge ? g / 2 : g;
-        image.setPixel(x, y, qRgb(s, s, std::min(255, s + 10)));
+        image.setPixel(x, y, curvature_scale != 0 ? colour : qRgb(s, s, std::min(255, s + 10)));
       }
   }
   return image.save(QString::fromStdString(png)) ? 0 : 1;
@@ -337,17 +399,20 @@ int main(int argc, char** argv) {
     if (cmd == "metrics" && argc == 5) return Metrics(argv[2], argv[3], argv[4]);
     if (cmd == "subdivide" && argc == 4) return Subdivide(argv[2], argv[3]);
     if (cmd == "kept" && argc == 4) return Kept(argv[2], argv[3]);
+    if (cmd == "side-by-side" && argc >= 4)
+      return SideBySide(argv[2], std::vector<std::string>(argv + 3, argv + argc));
     if (cmd == "append" && argc == 5) return Append(argv[2], argv[3], argv[4]);
     if (cmd == "punch-many" && argc == 7)
       return PunchMany(argv[2], argv[3], std::stoi(argv[4]), std::stod(argv[5]),
                        std::stod(argv[6]));
     if (cmd == "ideal" && argc == 6) return Ideal(argv[2], argv[3], argv[4], std::stoi(argv[5]));
-    if (cmd == "render" && (argc == 8 || argc == 11))
+    if (cmd == "render" && (argc == 8 || argc == 11 || argc == 12))
       return Render(
           argv[2], argv[3], Point3m(std::stof(argv[4]), std::stof(argv[5]), std::stof(argv[6])),
           std::stod(argv[7]),
-          argc == 11 ? Point3m(std::stof(argv[8]), std::stof(argv[9]), std::stof(argv[10]))
-                     : Point3m(0, 0, 0));
+          argc >= 11 ? Point3m(std::stof(argv[8]), std::stof(argv[9]), std::stof(argv[10]))
+                     : Point3m(0, 0, 0),
+          argc == 12 ? std::stod(argv[11]) : 0.0);
     std::fprintf(stderr, "usage: bench_tools metrics GT INPUT RESULT | subdivide IN OUT | "
                          "append A B OUT | punch-many IN OUT COUNT MIN_R MAX_R | ideal GT INPUT "
                          "DIR SIZE | render MESH OUT.png CX CY CZ "

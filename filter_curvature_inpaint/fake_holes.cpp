@@ -95,12 +95,19 @@ private:
   std::unordered_map<uint64_t, std::vector<int>> cells_;
 };
 
-/// RMS distance from the centres of `from` to the surface `to`.
-double RmsDistance(const Triangles& from, const Triangles& to) {
+/// RMS distance from the centres of `from` (at most `samples` of them, evenly strided) to the
+/// surface `to`.
+double RmsDistance(const Triangles& from, const Triangles& to, size_t samples = 400) {
+  if (from.empty()) return 0.0;
   const TriangleGrid grid(to);
+  const size_t stride = std::max<size_t>(1, from.size() / samples);
   double sum = 0;
-  for (const auto& t : from) sum += grid.Distance2((t[0] + t[1] + t[2]) / 3);
-  return from.empty() ? 0.0 : std::sqrt(sum / double(from.size()));
+  size_t n = 0;
+  for (size_t i = 0; i < from.size(); i += stride, ++n) {
+    const auto& t = from[i];
+    sum += grid.Distance2((t[0] + t[1] + t[2]) / 3);
+  }
+  return std::sqrt(sum / double(n));
 }
 
 Eigen::Vector3d ToEigen(const Point3m& p) {

@@ -207,12 +207,21 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
   std::string why;
   const auto fakes = CutFakeHoles(*ctx.mesh, *ctx.vf, *ctx.coarse, hi.hole, fp, &why);
   const size_t n = hv.candidates.size();
-  std::vector<double> error(n, 0.0), detail(n, 0.0);
-  int used = 0;
+  // Per fake hole that could be filled: its image and every candidate's fill of it.
+  struct Trial {
+    const FakeHole* fake;
+    CurvatureImagesResult images;
+    const HoleImage* hole = nullptr;
+    std::vector<std::vector<Eigen::Vector3d>> fills; ///< per candidate, the whole patch
+  };
+  std::vector<Trial> trials;
+  std::vector<double> error(n, 0.0), detail(n, -1.0);
   for (const auto& fake_hole : fakes) {
-    const FakeHole& fake = *fake_hole;
+    trials.emplace_back();
+    Trial& t = trials.back();
+    t.fake = fake_hole.get();
     CMeshO local;
-    CopyMesh(fake.holed, local);
+    CopyMesh(fake_hole->holed, local);
     CurvatureImagesParams ip = params.images;
     ip.coarse.keep_longest_open = true; // the piece's own border
     ip.coarse.max_hole_edges = 0;
@@ -221,50 +230,34 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
     ip.coarse.threads = 1; // holes already run in parallel
     ip.color_vertices = false;
     ip.image_size = std::min(ip.image_size, vp.image_size);
-    CurvatureImagesResult images;
     try {
-      images = ComputeCurvatureImages(local, ip);
+      t.images = ComputeCurvatureImages(local, ip);
     } catch (const std::exception&) {
+      trials.pop_back();
       continue;
     }
-    const HoleImage* f = nullptr;
-    for (const auto& h : images.holes)
-      if (h.problem.empty()) f = &h;
-    if (!f) continue;
-    // The truth's curvature spread over the cut, for the detail ratios of the tie-break.
-    std::vector<int> cut_vertices;
-    const Point3m centre(Scalarm(fake.centre.x()), Scalarm(fake.centre.y()),
-                         Scalarm(fake.centre.z()));
-    const Scalarm r = Scalarm(fake.radius / images.coarse.box.scale);
-    for (size_t v = 0; v < fake.truth.vert.size(); ++v)
-      if (vcg::Distance(fake.truth.vert[v].cP(), centre) < r) cut_vertices.push_back(int(v));
-    std::vector<Eigen::Vector3d> support, normals;
-    ApssNeighbourhood(fake.truth, vcg_ext::VertexFaces(fake.truth), images.coarse.box, cut_vertices,
-                      ip.apss_rings, support, normals);
-    std::vector<int> query(cut_vertices.size());
-    for (size_t i = 0; i < query.size(); ++i) query[i] = int(i);
-    const double truth_spread =
-        Spread(vcg_ext::ApssMeanCurvature(support, normals, query, ip.apss));
-
-    const auto fill = FillTriangles(f->patch);
-    const QImage image = ToQImage(f->image, false), mask = MaskImage(f->image);
-    InpaintParams one = inpaint;
-    one.detail_scale = FillSpacingPixels(*f);
-    const std::vector<QImage> completed = InpaintEmbeddedAmplitudes(image, mask, one, vp.details);
-    for (size_t c = 0; c < n; ++c) {
-      std::vector<Eigen::Vector3d> points = f->patch.points;
-      if (hv.candidates[c] != "coarse") {
-        const PatchDeformation d = DeformPatch(*f, completed.at(c - (vp.coarse ? 1 : 0)), params);
-        if (d.result.solved) points = d.points;
-      }
-      error[c] += FakeHoleError(fake, points, fill) / fake.radius;
-      std::vector<double> h = PatchCurvature(points, f->patch.triangles, ip.apss), free_h;
-      for (size_t i = 0; i < h.size(); ++i)
-        if (f->is_new[i]) free_h.push_back(h[i]);
-      detail[c] += truth_spread > 0 ? Spread(free_h) / truth_spread : 0.0;
+    for (const auto& h : t.images.holes)
+      if (h.problem.empty()) t.hole = &h;
+    if (!t.hole) {
+      trials.pop_back();
+      continue;
     }
-    ++used;
+    const HoleImage& f = *t.hole;
+    const auto fill = FillTriangles(f.patch);
+    InpaintParams one = inpaint;
+    one.detail_scale = FillSpacingPixels(f);
+    const std::vector<QImage> completed = InpaintEmbeddedAmplitudes(
+        ToQImage(f.image, false), MaskImage(f.image), one, vp.details);
+    for (size_t c = 0; c < n; ++c) {
+      t.fills.push_back(f.patch.points);
+      if (hv.candidates[c] != "coarse") {
+        PatchDeformation d = DeformPatch(f, completed.at(c - (vp.coarse ? 1 : 0)), params);
+        if (d.result.solved) t.fills.back() = std::move(d.points);
+      }
+      error[c] += FakeHoleError(*t.fake, t.fills.back(), fill) / t.fake->radius;
+    }
   }
+  const int used = int(trials.size());
   hv.fake_holes = used;
   if (used == 0) {
     hv.candidates.clear();
@@ -272,19 +265,48 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
                          "; the variation score chooses";
     return;
   }
-  for (size_t c = 0; c < n; ++c) error[c] /= used, detail[c] /= used;
+  for (double& e : error) e /= used;
+  const size_t best = size_t(std::min_element(error.begin(), error.end()) - error.begin());
+  std::vector<size_t> tied;
+  for (size_t c = 0; c < n; ++c)
+    if (error[c] <= 1.02 * error[best]) tied.push_back(c);
+  // Among candidates within 2 % of the lowest error, one whose detail ratio on the fake holes
+  // lies in 0.7-1.3 (as much detail as the cut surface had), the closest of those. The ratios
+  // cost curvature fits, so they are measured only where they break a tie (else -1).
+  size_t choice = best;
+  if (tied.size() > 1) {
+    for (size_t c : tied) detail[c] = 0;
+    for (const Trial& t : trials) {
+      const FakeHole& fake = *t.fake;
+      std::vector<int> cut_vertices;
+      const double r = fake.radius / t.images.coarse.box.scale;
+      for (size_t v = 0; v < fake.truth.vert.size(); ++v) {
+        const auto& p = fake.truth.vert[v].cP();
+        if ((Eigen::Vector3d(p[0], p[1], p[2]) - fake.centre).norm() < r)
+          cut_vertices.push_back(int(v));
+      }
+      std::vector<Eigen::Vector3d> support, normals;
+      ApssNeighbourhood(fake.truth, vcg_ext::VertexFaces(fake.truth), t.images.coarse.box,
+                        cut_vertices, params.images.apss_rings, support, normals);
+      std::vector<int> query(cut_vertices.size());
+      for (size_t i = 0; i < query.size(); ++i) query[i] = int(i);
+      const double truth =
+          Spread(vcg_ext::ApssMeanCurvature(support, normals, query, params.images.apss));
+      for (size_t c : tied) {
+        const std::vector<double> h =
+            PatchCurvature(t.fills[c], t.hole->patch.triangles, params.images.apss);
+        std::vector<double> free_h;
+        for (size_t i = 0; i < h.size(); ++i)
+          if (t.hole->is_new[i]) free_h.push_back(h[i]);
+        detail[c] += truth > 0 ? Spread(free_h) / truth / used : 0.0;
+      }
+    }
+    auto natural = [&](size_t c) { return detail[c] >= 0.7 && detail[c] <= 1.3; };
+    for (size_t c : tied)
+      if (natural(c) && (!natural(choice) || error[c] < error[choice])) choice = c;
+  }
   hv.validation_errors = error;
   hv.validation_detail = detail;
-  // The lowest error; among candidates within 2 % of it, one whose detail ratio lies in
-  // 0.7-1.3 (as much detail as the surface shows), if any.
-  size_t best = size_t(std::min_element(error.begin(), error.end()) - error.begin());
-  size_t choice = best;
-  for (size_t c = 0; c < n; ++c) {
-    const bool tied = error[c] <= 1.02 * error[best];
-    const bool natural = detail[c] >= 0.7 && detail[c] <= 1.3;
-    const bool choice_natural = detail[choice] >= 0.7 && detail[choice] <= 1.3;
-    if (tied && natural && (!choice_natural || error[c] < error[choice])) choice = c;
-  }
   hv.choice = int(choice);
   if (!why.empty()) hv.validation_note = why;
 }

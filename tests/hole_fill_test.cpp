@@ -7,8 +7,6 @@
 #include <vcg/complex/algorithms/create/platonic.h>
 #include <vcg_ext/punch_hole.h>
 
-#include <QGuiApplication>
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -246,11 +244,3 @@ TEST(FakeHoles, TheValidatedChoiceIsTheSameForAnyThreadCount) {
 }
 
 } // namespace
-
-int main(int argc, char** argv) {
-  // QImage needs no display, but the pipeline's image code expects an application.
-  qputenv("QT_QPA_PLATFORM", "offscreen");
-  QGuiApplication app(argc, argv);
-  ::testing::InitGoogleTest(&argc, argv);
-  return RUN_ALL_TESTS();
-}
