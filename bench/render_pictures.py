@@ -14,10 +14,12 @@ import sys
 import tempfile
 import shutil
 
-from run_coarse_bench import BIN, ROOT, SHARED, build, sh
+from run_coarse_bench import BIN, BUILD, ROOT, SHARED, build, sh
 from run_holdout_bench import punch
 
 sys.path.insert(0, os.path.join(ROOT, "tests"))
+os.environ.setdefault("CI_BUILD_DIR", BUILD)
+os.environ.setdefault("CI_SOURCE_DIR", ROOT)
 from support import read_binary_ply_xyz  # noqa: E402
 
 TOOL = os.path.join(BIN, "curvature-inpaint")

@@ -96,7 +96,8 @@ def main():
             row("fill, oracle image", s)
             for mode in ("direct", "paper"):
                 r, s = fill(inp, out, "fill", "--mode", mode)
-                row(f"fill, {mode}", s, "+".join(re.findall(r"(\d+) deformation steps", r.stderr)) or "-")
+                row(f"fill, {mode} (validated)", s,
+                    "+".join(re.findall(r"(\d+) deformation steps", r.stderr)) or "-")
             _, s = cgal(inp, out)
             row("CGAL", s)
             s = meshlab(server, script, inp, out)

@@ -92,15 +92,19 @@ def plot_bars(path, rows):
     with open(data, "w") as f:
         for i, r in enumerate(rows):
             f.write(f"{i} {r['name']} {ratio(r['fill']['rms'], r['cgal']['rms']):.4f} "
-                    f"{ratio(r['close']['rms'], r['cgal']['rms']):.4f}\n")
+                    f"{ratio(r['close']['rms'], r['cgal']['rms']):.4f} "
+                    f"{ratio(r['oracle']['rms'], r['cgal']['rms']) if 'oracle' in r else 0:.4f}\n")
     script = "\n".join([
         "set terminal pngcairo size 1100,520 font 'DejaVu Sans,11'", "set termoption noenhanced",
         f"set output '{path}'", "set title 'Held-out holes (test half): hole-region RMS relative to CGAL'",
         "set ylabel 'RMS / CGAL RMS (below 1: closer to the ground truth)'", "set style data histogram",
         "set style histogram cluster gap 1", "set style fill solid 0.8 border -1", "set boxwidth 0.9",
+        "set bmargin 9",
         "set xtics rotate by -45 scale 0", "set grid ytics", "set key top left",
         "set arrow from graph 0, first 1 to graph 1, first 1 nohead dt 2 lw 2",
-        f"plot '{data}' using 3:xtic(2) title 'curvature-inpaint fill', '' using 4 title 'MeshLab Close Holes'"])
+        "set logscale y", "set yrange [0.1:12]",
+        f"plot '{data}' using 3:xtic(2) title 'curvature-inpaint fill', '' using 4 title 'MeshLab Close Holes', "
+        f"'' using 5 title 'fill, oracle image (the ceiling)'"])
     run_gnuplot(script)
     os.remove(data)
 
@@ -108,10 +112,11 @@ def plot_bars(path, rows):
 def plot_scatter(path, rows):
     data = path + ".dat"
     with open(data, "w") as f:
-        for key in ("fill", "cgal", "close"):
+        for key in ("fill", "oracle", "cgal", "close"):
             f.write(f"# {key}\n")
             for r in rows:
-                f.write(f"{ratio(r[key]['rms'], r['cgal']['rms']):.4f} {r[key]['detail']:.4f}\n")
+                if key in r:
+                    f.write(f"{ratio(r[key]['rms'], r['cgal']['rms']):.4f} {r[key]['detail']:.4f}\n")
             f.write("\n\n")
     script = "\n".join([
         "set terminal pngcairo size 900,620 font 'DejaVu Sans,11'", "set termoption noenhanced",
@@ -120,7 +125,8 @@ def plot_scatter(path, rows):
         "set grid", "set key outside right", "set logscale x",
         "set arrow from graph 0, first 1 to graph 1, first 1 nohead dt 2",
         f"plot '{data}' index 0 with points pt 7 ps 1.5 title 'curvature-inpaint fill', "
-        f"'' index 1 with points pt 5 ps 1.2 title 'CGAL', '' index 2 with points pt 9 ps 1.5 title 'Close Holes'"])
+        f"'' index 1 with points pt 6 ps 1.5 title 'fill, oracle image (the ceiling)', "
+        f"'' index 2 with points pt 5 ps 1.2 title 'CGAL', '' index 3 with points pt 9 ps 1.5 title 'Close Holes'"])
     run_gnuplot(script)
     os.remove(data)
 
@@ -143,6 +149,73 @@ def summary(label, rows, key):
             f"{statistics.median(r[key]['seconds'] for r in rows):.2f} |")
 
 
+def print_report(rows, split, sweep, variants, oracle, plots):
+    """The tables (Markdown, on stdout) and, with `plots`, the two PNGs in docs/."""
+
+    print(f"\nPer hole ({split} half): RMS ratio / Hausdorff ratio (to CGAL's) / detail ratio / "
+          "normal deviation / process s\n")
+    main_methods = ["fill", "coarse"] + (["oracle"] if oracle else []) + ["close"]
+    extra = [f"detail {a}" for a in sweep] + [v[0] for v in variants]
+    methods = main_methods + extra
+    print("| hole | edges | CGAL: RMS / Hausdorff (% diag), detail, s | " + " | ".join(main_methods) + " |")
+    print("|" + "---|" * (3 + len(main_methods)))
+    for r in rows:
+        c = r["cgal"]
+        cells = [f"{ratio(r[k]['rms'], c['rms']):.2f} / {ratio(r[k]['hausdorff'], c['hausdorff']):.2f} / "
+                 f"{r[k]['detail']:.2f} / {r[k]['normal']:.1f}° / {r[k]['seconds']:.2f} s" for k in main_methods]
+        print(f"| {r['name']} | {r['edges']} | {c['rms']:.3f} / {c['hausdorff']:.2f}, {c['detail']:.2f}, "
+              f"{c['seconds']:.2f} s | " + " | ".join(cells) + " |")
+    if extra:
+        print(f"\nPer hole ({split} half), fixed settings: RMS ratio to CGAL's / detail ratio\n")
+        print("| hole | " + " | ".join(extra) + " |")
+        print("|" + "---|" * (1 + len(extra)))
+        for r in rows:
+            print(f"| {r['name']} | " + " | ".join(
+                f"{ratio(r[k]['rms'], r['cgal']['rms']):.2f} / {r[k]['detail']:.2f}" for k in extra) + " |")
+    print("\nSummary: holes with lower RMS than CGAL, median RMS ratio, holes with Hausdorff ≤ CGAL's, "
+          "mean detail ratio, all watertight and manifold, every input vertex kept, median process s\n")
+    print("| method | RMS < CGAL | median RMS ratio | Hausdorff ≤ CGAL | mean detail | watertight | kept | s |")
+    print("|---|---|---|---|---|---|---|---|")
+    for k in methods + ["cgal"]:
+        print(summary(k, rows, k))
+    if sweep:
+        # The validated choice against the best candidate by the ground truth on the real hole.
+        hits = near = total = 0
+        lines = []
+        for r in rows:
+            v = r["fill_report"][0].get("validation")
+            if not v:
+                continue
+            by_truth = {"coarse": r["coarse"]["rms"]}
+            by_truth.update({f"detail {a}": r[f"detail {a}"]["rms"] for a in sweep})
+            names = [c["name"] for c in v["candidates"] if c["name"] in by_truth]
+            best = min(names, key=lambda n: by_truth[n])
+            total += 1
+            hits += v["choice"] == best
+            near += by_truth[v["choice"]] <= 1.02 * by_truth[best]
+            lines.append(f"| {r['name']} | {v['choice']} | {best} | "
+                         f"{by_truth[v['choice']]:.3f} | {by_truth[best]:.3f} |")
+        print(f"\nValidated choice against the best candidate by the ground truth: {hits} of {total} "
+              f"the best, {near} of {total} within 2 % of it\n")
+        print("| hole | validated choice | best by ground truth | its RMS | best RMS |")
+        print("|---|---|---|---|---|")
+        print("\n".join(lines))
+    if oracle:
+        print("\nOracle: curvature spread carried per stage, as a fraction of the ground truth's "
+              "(image: its hole pixels; target: at the fill's vertices; result: the deformed fill)\n")
+        print("| hole | image | target | result | mesh detail ratio |")
+        print("|---|---|---|---|---|")
+        for r in rows:
+            sp = r["oracle_spread"]
+            t = sp.get("truth") or 0
+            if t > 0:
+                print(f"| {r['name']} | {sp['truth_image'] / t:.2f} | {sp['target'] / t:.2f} | "
+                      f"{sp['result'] / t:.2f} | {r['oracle']['detail']:.2f} |")
+    if plots:
+        plot_bars(os.path.join(DOCS, "holdout_rms_ratio.png"), rows)
+        plot_scatter(os.path.join(DOCS, "holdout_detail_vs_rms.png"), rows)
+
+
 def main():
     argv = sys.argv[1:]
     fill_args = argv[argv.index("--") + 1:] if "--" in argv else []
@@ -151,6 +224,11 @@ def main():
     sweep = [a for a in argv[argv.index("--sweep-detail") + 1].split(",")] if "--sweep-detail" in argv else []
     oracle = "--oracle" in argv
     variants = [argv[i + 1].split("=", 1) for i, a in enumerate(argv) if a == "--variant"]
+    if "--from-json" in argv:  # the tables of an earlier run, from the results it saved
+        with open(argv[argv.index("--from-json") + 1]) as f:
+            rows = json.load(f)
+        print_report(rows, split, sweep, variants, oracle, "--plots" in argv)
+        return
     build()
     tmp = tempfile.mkdtemp(prefix="holdout-bench-")
     rows = []
@@ -188,62 +266,7 @@ def main():
             print(f"{row['name']} done", file=sys.stderr, flush=True)
         with open(os.path.join(ROOT, "build-bench", f"holdout_{split}.json"), "w") as f:
             json.dump(rows, f, indent=1)
-
-        print(f"\nPer hole ({split} half): RMS and Hausdorff as ratios to CGAL's; detail ratio; "
-              "normal deviation (°); process s\n")
-        methods = (["coarse", "fill"] + (["oracle"] if oracle else []) + [f"detail {a}" for a in sweep] +
-                   [v[0] for v in variants] + ["close"])
-        print("| hole | edges | CGAL RMS / Hausdorff (% diag) | " +
-              " | ".join(methods) + " |")
-        print("|" + "---|" * (3 + len(methods)))
-        for r in rows:
-            c = r["cgal"]
-            cells = [f"{ratio(r[k]['rms'], c['rms']):.2f} / {ratio(r[k]['hausdorff'], c['hausdorff']):.2f} / "
-                     f"{r[k]['detail']:.2f} / {r[k]['normal']:.1f}° / {r[k]['seconds']:.2f} s" for k in methods]
-            print(f"| {r['name']} | {r['edges']} | {c['rms']:.3f} / {c['hausdorff']:.2f} (detail {c['detail']:.2f}, "
-                  f"{c['seconds']:.2f} s) | " + " | ".join(cells) + " |")
-        print("\nSummary: holes with lower RMS than CGAL, median RMS ratio, holes with Hausdorff ≤ CGAL's, "
-              "mean detail ratio, all watertight and manifold, every input vertex kept, median process s\n")
-        print("| method | RMS < CGAL | median RMS ratio | Hausdorff ≤ CGAL | mean detail | watertight | kept | s |")
-        print("|---|---|---|---|---|---|---|---|")
-        for k in methods + ["cgal"]:
-            print(summary(k, rows, k))
-        if sweep:
-            # The validated choice against the best candidate by the ground truth on the real hole.
-            hits = near = total = 0
-            lines = []
-            for r in rows:
-                v = r["fill_report"][0].get("validation")
-                if not v:
-                    continue
-                by_truth = {"coarse": r["coarse"]["rms"]}
-                by_truth.update({f"detail {a}": r[f"detail {a}"]["rms"] for a in sweep})
-                names = [c["name"] for c in v["candidates"] if c["name"] in by_truth]
-                best = min(names, key=lambda n: by_truth[n])
-                total += 1
-                hits += v["choice"] == best
-                near += by_truth[v["choice"]] <= 1.02 * by_truth[best]
-                lines.append(f"| {r['name']} | {v['choice']} | {best} | "
-                             f"{by_truth[v['choice']]:.3f} | {by_truth[best]:.3f} |")
-            print(f"\nValidated choice against the best candidate by the ground truth: {hits} of {total} "
-                  f"the best, {near} of {total} within 2 % of it\n")
-            print("| hole | validated choice | best by ground truth | its RMS | best RMS |")
-            print("|---|---|---|---|---|")
-            print("\n".join(lines))
-        if oracle:
-            print("\nOracle: curvature spread carried per stage, as a fraction of the ground truth's "
-                  "(image: its hole pixels; target: at the fill's vertices; result: the deformed fill)\n")
-            print("| hole | image | target | result | mesh detail ratio |")
-            print("|---|---|---|---|---|")
-            for r in rows:
-                sp = r["oracle_spread"]
-                t = sp.get("truth") or 0
-                if t > 0:
-                    print(f"| {r['name']} | {sp['truth_image'] / t:.2f} | {sp['target'] / t:.2f} | "
-                          f"{sp['result'] / t:.2f} | {r['oracle']['detail']:.2f} |")
-        if "--plots" in argv:
-            plot_bars(os.path.join(DOCS, "holdout_rms_ratio.png"), rows)
-            plot_scatter(os.path.join(DOCS, "holdout_detail_vs_rms.png"), rows)
+        print_report(rows, split, sweep, variants, oracle, "--plots" in argv)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 

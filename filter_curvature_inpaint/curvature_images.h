@@ -21,8 +21,9 @@ namespace curvature_inpaint {
 struct CurvatureImagesParams {
   /// The patches' fills are refined finer than their surroundings (Liepa's alpha 2, the coarse
   /// fill's own default is 1.41): their vertices sample the image, and a fill as dense as the
-  /// scan cannot carry the detail of its curvature (the oracle of the held-out benchmark kept
-  /// 0.48-0.83 of the truth's spread at 1.41, 0.65-0.98 at 2).
+  /// scan cannot carry the detail of its curvature (deformed to the ground truth's own image,
+  /// the public cases' Igea, armadillo and Nefertiti holes kept 0.48-0.88 of the truth's
+  /// curvature spread at 1.41, 0.65-0.98 at 2).
   CurvatureImagesParams() { coarse.density_alpha = 2; }
   vcg_ext::CoarseFillParams coarse;
   vcg_ext::HoleSegmentationParams segmentation;
@@ -32,7 +33,8 @@ struct CurvatureImagesParams {
   double low_percentile = 0.05, high_percentile = 0.95; ///< of the known ring's curvature
   /// The colour map's ends at this many times the larger of the two percentiles: a hole often
   /// holds more curvature than its ring (a nose tip), which an image clamped at the ring's
-  /// range cannot show (the oracle's images kept 0.61 of the armadillo's spread at 1, 0.70 at 2).
+  /// range cannot show (the ground truth's image of the armadillo belly kept 0.60 of its spread at
+  /// 1, 0.70 at 2).
   double headroom = 2;
   bool color_vertices = true; ///< paint the patch vertices with their curvature colours
 };

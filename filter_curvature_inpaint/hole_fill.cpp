@@ -207,6 +207,10 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
   std::string why;
   const auto fakes = CutFakeHoles(*ctx.mesh, *ctx.vf, *ctx.coarse, hi.hole, fp, &why);
   const size_t n = hv.candidates.size();
+  // The fake holes are deformed in direct mode whatever the hole's: paper mode's hundreds of
+  // steps, twenty times over, would take a minute a hole. The choice is an amplitude.
+  HoleFillParams direct = params;
+  direct.mode = "direct";
   // Per fake hole that could be filled: its image and every candidate's fill of it.
   struct Trial {
     const FakeHole* fake;
@@ -251,7 +255,7 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
     for (size_t c = 0; c < n; ++c) {
       t.fills.push_back(f.patch.points);
       if (hv.candidates[c] != "coarse") {
-        PatchDeformation d = DeformPatch(f, completed.at(c - (vp.coarse ? 1 : 0)), params);
+        PatchDeformation d = DeformPatch(f, completed.at(c - (vp.coarse ? 1 : 0)), direct);
         if (d.result.solved) t.fills.back() = std::move(d.points);
       }
       error[c] += FakeHoleError(*t.fake, t.fills.back(), fill) / t.fake->radius;
