@@ -250,8 +250,8 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
     const auto fill = FillTriangles(f.patch);
     InpaintParams one = inpaint;
     one.detail_scale = FillSpacingPixels(f);
-    const std::vector<QImage> completed = InpaintEmbeddedAmplitudes(
-        ToQImage(f.image, false), MaskImage(f.image), one, vp.details);
+    const std::vector<QImage> completed =
+        InpaintEmbeddedAmplitudes(ToQImage(f.image, false), MaskImage(f.image), one, vp.details);
     for (size_t c = 0; c < n; ++c) {
       t.fills.push_back(f.patch.points);
       if (hv.candidates[c] != "coarse") {

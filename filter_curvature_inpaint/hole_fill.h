@@ -64,8 +64,9 @@ struct HoleFillReport {
   double target_spread = 0, result_spread = 0;
   std::vector<std::string> candidates;   ///< validated ways to fill it; empty: not validated
   std::vector<double> validation_errors; ///< per candidate: RMS over the fake holes / radius
-  std::vector<double> validation_detail; ///< per candidate: detail ratio on the fake holes
-  int choice = -1;                       ///< index into candidates
+  /// per candidate: detail ratio on the fake holes where it breaks a tie, else -1
+  std::vector<double> validation_detail;
+  int choice = -1; ///< index into candidates
   int fake_holes = 0;
   std::string validation_note; ///< why there are fewer fake holes, or none
   std::string problem;         ///< why the hole kept its coarse fill; empty if none
