@@ -4,8 +4,8 @@ import json
 import os
 import unittest
 
-from support import (SCRIPTS, TOOL, TempDirTest, info, make_meshlab_prefix, png_size, run, sha256,
-                     write_non_manifold_ply)
+from support import (SCRIPTS, TOOL, TempDirTest, info, make_meshlab_prefix, png_size,
+                     read_binary_ply_xyz, run, sha256, write_non_manifold_ply)
 
 
 class MeshlabServer(TempDirTest):
@@ -57,7 +57,6 @@ class MeshlabServer(TempDirTest):
         self.assertEqual(info(out)["holes"], 0)
 
     def test_hole_fill_script_fills_two_holes_and_keeps_the_rest_bit_for_bit(self):
-        from inpaint_test import read_binary_ply_xyz
         twice = self.punched_twice("igea_190k.ply", (21537, 0.04), (60000, 0.03))
         out = self.path("filled.ply")
         r = self.meshlabserver(twice, out, os.path.join(SCRIPTS, "curvature_inpaint_hole_fill.mlx"))
@@ -67,6 +66,34 @@ class MeshlabServer(TempDirTest):
         self.assertEqual(info(out)["non_manifold_edges"], 0)
         before, after = read_binary_ply_xyz(twice), read_binary_ply_xyz(out)
         self.assertEqual(after[:len(before)], before)
+
+    def test_detail_and_fake_holes_parameters_reach_the_mesh(self):
+        # The shipped script validates each hole on fake holes and logs it; with no fake holes,
+        # the Detail parameter is the amplitude, and it moves the filled vertices.
+        src = self.punched("igea_190k.ply", 21537, 0.04)
+        out = self.path("validated.ply")
+        r = self.meshlabserver(src, out, os.path.join(SCRIPTS, "curvature_inpaint_hole_fill.mlx"))
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertRegex(r.stdout + r.stderr, r"validation 1: on \d fake holes, .*; chose ")
+        with open(os.path.join(SCRIPTS, "curvature_inpaint_hole_fill.mlx")) as f:
+            shipped = f.read()
+        self.assertIn('name="FakeHoles" value="4"', shipped)
+        self.assertIn('name="Detail" value="0"', shipped)
+        filled = {}
+        for detail in ("0", "2"):
+            script = self.path(f"detail_{detail}.mlx")
+            with open(script, "w") as f:
+                f.write(shipped.replace('name="FakeHoles" value="4"', 'name="FakeHoles" value="0"')
+                        .replace('name="Detail" value="0"', f'name="Detail" value="{detail}"'))
+            out = self.path(f"detail_{detail}.ply")
+            r = self.meshlabserver(src, out, script)
+            self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+            self.assertNotIn("validation 1:", r.stdout + r.stderr)
+            self.assertEqual(info(out)["holes"], 0)
+            filled[detail] = read_binary_ply_xyz(out)
+        n = len(read_binary_ply_xyz(src))
+        self.assertEqual(filled["0"][:n], filled["2"][:n])
+        self.assertNotEqual(filled["0"][n:], filled["2"][n:])
 
     def edited_script(self, name, value_of):
         with open(os.path.join(SCRIPTS, name)) as f:
