@@ -27,7 +27,8 @@ const char* const kUsage =
     "                   [--variations N] [--pick auto|K] [--mode direct|paper] [--similitude S]\n"
     "                   [--transformation-constant T] [--max-hole-edges N] [--size PX]\n"
     "                   [--images DIR] [--report FILE.json] [--from-images DIR] [--context C]\n"
-    "                   [--fake-holes K] [--detail A] [--density D] [--oracle GT]\n"
+    "                   [--fake-holes K] [--fake-hole-size PX] [--detail A] [--density D]\n"
+    "                   [--oracle GT]\n"
     "      The main job: fill every hole of IN with detail (coarse fill, curvature images,\n"
     "      inpainting, deformation to the chosen variation) and write OUT. --pick auto (default)\n"
     "      takes the best-scored variation. Backends and their options as for inpaint.\n"
@@ -36,6 +37,7 @@ const char* const kUsage =
     "      --fake-holes K (default 4): fill each hole the way (coarse fill, or detail 0, 0.5,\n"
     "      1, 2) that came closest on K holes of its size cut into known surface near it;\n"
     "      --detail A instead uses amplitude A on every hole (0: the smooth continuation).\n"
+    "      --fake-hole-size PX: the fake holes' images (default 256).\n"
     "      --density D: the fill's vertex density (Liepa's alpha; default 2, coarse 1.41).\n"
     "      --oracle GT (benchmarks): deform to the curvature image painted from GT, the mesh\n"
     "      before its holes were cut: the best any inpainter can do with this deformation.\n"
@@ -244,6 +246,7 @@ int Fill(Args& args) {
   // A detail amplitude given is used on every hole; otherwise the fake holes choose.
   p.validation.fake_holes =
       int(args.Integer("--fake-holes", detail_given ? 0 : p.validation.fake_holes, 0));
+  p.validation.image_size = int(args.Integer("--fake-hole-size", p.validation.image_size, 16));
   const std::string pick = args.Option("--pick", "auto");
   if (pick != "auto") {
     char* end = nullptr;
