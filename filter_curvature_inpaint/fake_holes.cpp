@@ -198,16 +198,15 @@ std::vector<std::unique_ptr<FakeHole>> CutFakeHoles(const CMeshO& m, const vcg_e
         }
       });
     }
-    auto made = std::make_unique<FakeHole>();
-    FakeHole& fake = *made;
-    if (on_border) continue;
+    if (on_border || faces.size() < 50) continue;
     std::vector<int> order;
     for (int f : faces)
       for (int k = 0; k < 3; ++k) {
         const int w = int(vcg::tri::Index(m, m.face[f].cV(k)));
         if (local.emplace(w, int(order.size())).second) order.push_back(w);
       }
-    if (faces.size() < 50) continue;
+    auto made = std::make_unique<FakeHole>();
+    FakeHole& fake = *made;
     vcg::tri::Allocator<CMeshO>::AddVertices(fake.truth, order.size());
     for (size_t i = 0; i < order.size(); ++i) fake.truth.vert[i].P() = m.vert[order[i]].cP();
     vcg::tri::Allocator<CMeshO>::AddFaces(fake.truth, faces.size());
