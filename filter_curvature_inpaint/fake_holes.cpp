@@ -10,6 +10,7 @@
 #include <limits>
 #include <random>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace curvature_inpaint {
 
@@ -168,15 +169,13 @@ std::vector<std::unique_ptr<FakeHole>> CutFakeHoles(const CMeshO& m, const vcg_e
     // The piece: the scan faces with every corner within `piece` of p, grown from p.
     std::vector<int> faces, stack{v};
     std::unordered_map<int, int> local;
-    std::unordered_map<int, char> seen_vertex{{v, 1}};
-    std::unordered_map<int, char> taken;
+    std::unordered_set<int> seen_vertex{v}, taken;
     bool on_border = false;
     while (!stack.empty()) {
       const int u = stack.back();
       stack.pop_back();
       vf.ForEach(u, [&](int f) {
-        if (size_t(f) >= scan_faces || taken.count(f)) return;
-        taken[f] = 1;
+        if (size_t(f) >= scan_faces || !taken.insert(f).second) return;
         const auto& face = m.face[f];
         for (int k = 0; k < 3; ++k)
           if ((ToEigen(face.cP(k)) - p).norm() > piece) return;
@@ -194,7 +193,7 @@ std::vector<std::unique_ptr<FakeHole>> CutFakeHoles(const CMeshO& m, const vcg_e
         faces.push_back(f);
         for (int k = 0; k < 3; ++k) {
           const int w = int(vcg::tri::Index(m, face.cV(k)));
-          if (seen_vertex.emplace(w, 1).second) stack.push_back(w);
+          if (seen_vertex.insert(w).second) stack.push_back(w);
         }
       });
     }
@@ -230,6 +229,9 @@ std::vector<std::unique_ptr<FakeHole>> CutFakeHoles(const CMeshO& m, const vcg_e
       if (inside)
         fake.cut.push_back({box.ToUnit(f.cP(0)), box.ToUnit(f.cP(1)), box.ToUnit(f.cP(2))});
     }
+    for (size_t i = 0; i < fake.truth.vert.size(); ++i)
+      if (vcg::Distance(fake.truth.vert[i].cP(), centre) < Scalarm(r))
+        fake.cut_vertices.push_back(int(i));
     fake.radius = r * box.scale;
     fake.centre = p;
     fakes.push_back(std::move(made));

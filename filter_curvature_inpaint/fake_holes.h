@@ -24,6 +24,7 @@ namespace curvature_inpaint {
 struct FakeHole {
   CMeshO truth, holed;
   std::vector<std::array<Eigen::Vector3d, 3>> cut;  ///< the removed triangles, unit box of holed
+  std::vector<int> cut_vertices;                    ///< vertices of truth the hole removed
   double radius = 0;                                ///< of the hole, unit box of holed
   Eigen::Vector3d centre = Eigen::Vector3d::Zero(); ///< of the hole, the mesh's units
 };

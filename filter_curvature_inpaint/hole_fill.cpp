@@ -93,13 +93,17 @@ void SavePng(const QImage& image, const std::string& path) {
     throw std::runtime_error("cannot write " + path);
 }
 
-/// Scores every variation and takes the best, or the given pick.
+/// Scores every variation and takes the given pick, or the automatic one: none where the
+/// coarse fill validated best, else the best score.
 void ScoreAndPick(HoleVariations& hv, int pick) {
   hv.scores.clear();
   for (const QImage& v : hv.variations) hv.scores.push_back(ScoreVariation(v, hv.mask));
-  hv.pick = pick > 0
-                ? std::min(pick, int(hv.variations.size()))
-                : int(std::max_element(hv.scores.begin(), hv.scores.end()) - hv.scores.begin()) + 1;
+  if (pick > 0)
+    hv.pick = std::min(pick, int(hv.variations.size()));
+  else if (CoarseValidatedBest(hv))
+    hv.pick = 0;
+  else
+    hv.pick = int(std::max_element(hv.scores.begin(), hv.scores.end()) - hv.scores.begin()) + 1;
 }
 
 /// APSS mean curvature of every vertex of a (deformed) patch, from the patch alone.
@@ -254,7 +258,7 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
         InpaintEmbeddedAmplitudes(ToQImage(f.image, false), MaskImage(f.image), one, vp.details);
     for (size_t c = 0; c < n; ++c) {
       t.fills.push_back(f.patch.points);
-      if (hv.candidates[c] != "coarse") {
+      if (!(vp.coarse && c == 0)) {
         PatchDeformation d = DeformPatch(f, completed.at(c - (vp.coarse ? 1 : 0)), direct);
         if (d.result.solved) t.fills.back() = std::move(d.points);
       }
@@ -282,17 +286,10 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
     for (size_t c : tied) detail[c] = 0;
     for (const Trial& t : trials) {
       const FakeHole& fake = *t.fake;
-      std::vector<int> cut_vertices;
-      const double r = fake.radius / t.images.coarse.box.scale;
-      for (size_t v = 0; v < fake.truth.vert.size(); ++v) {
-        const auto& p = fake.truth.vert[v].cP();
-        if ((Eigen::Vector3d(p[0], p[1], p[2]) - fake.centre).norm() < r)
-          cut_vertices.push_back(int(v));
-      }
       std::vector<Eigen::Vector3d> support, normals;
       ApssNeighbourhood(fake.truth, vcg_ext::VertexFaces(fake.truth), t.images.coarse.box,
-                        cut_vertices, params.images.apss_rings, support, normals);
-      std::vector<int> query(cut_vertices.size());
+                        fake.cut_vertices, params.images.apss_rings, support, normals);
+      std::vector<int> query(fake.cut_vertices.size());
       for (size_t i = 0; i < query.size(); ++i) query[i] = int(i);
       const double truth =
           Spread(vcg_ext::ApssMeanCurvature(support, normals, query, params.images.apss));
@@ -312,6 +309,7 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
   hv.validation_errors = error;
   hv.validation_detail = detail;
   hv.choice = int(choice);
+  if (!CoarseValidatedBest(hv)) hv.detail = vp.details[choice - (vp.coarse ? 1 : 0)];
   if (!why.empty()) hv.validation_note = why;
 }
 
@@ -337,13 +335,11 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& 
     hv.variations = {KnownPixelsKept(truth.image, hv.image, hv.mask)};
   } else if (params.inpainted_dir.empty()) {
     hv.detail_scale = FillSpacingPixels(hi);
+    hv.detail = inpaint.detail;
+    if (ctx.mesh && ValidatesOnFakeHoles(params)) ValidateHole(hi, params, inpaint, ctx, hv);
     InpaintParams at_scale = inpaint;
+    at_scale.detail = hv.detail;
     if (at_scale.detail_scale <= 0) at_scale.detail_scale = hv.detail_scale;
-    if (ctx.mesh && inpaint.backend == "embedded" && params.validation.fake_holes > 0) {
-      ValidateHole(hi, params, inpaint, ctx, hv);
-      if (hv.choice >= 0 && hv.candidates[size_t(hv.choice)] != "coarse")
-        at_scale.detail = params.validation.details[size_t(hv.choice) - params.validation.coarse];
-    }
     hv.variations = Inpaint(hv.image, hv.mask, at_scale);
   } else {
     const std::string base = params.inpainted_dir + "/hole_" + std::to_string(k + 1);
@@ -357,10 +353,6 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& 
   }
   hv.inpaint_s = Since(t);
   ScoreAndPick(hv, params.pick);
-  // The automatic pick follows the validation: where the coarse fill validated best, the hole
-  // keeps it (a pick given by number still applies).
-  if (params.pick == 0 && hv.choice >= 0 && hv.candidates[size_t(hv.choice)] == "coarse")
-    hv.pick = 0;
   return hv;
 }
 
@@ -484,6 +476,7 @@ void InpaintAgain(HoleVariations& hole, const InpaintParams& params) {
   if (hole.image.isNull()) throw std::runtime_error("this hole has no curvature image");
   const auto t = Clock::now();
   InpaintParams at_scale = params;
+  at_scale.detail = hole.detail;
   if (at_scale.detail_scale <= 0) at_scale.detail_scale = hole.detail_scale;
   hole.variations = Inpaint(hole.image, hole.mask, at_scale);
   hole.inpaint_s = Since(t);
@@ -557,6 +550,16 @@ double ScoreVariation(const QImage& variation, const QImage& mask) {
   return -(continuity + palette / hole_pixels / 255.0 + 0.5 * outside / hole_pixels);
 }
 
+bool ValidatesOnFakeHoles(const HoleFillParams& p) {
+  return p.validation.fake_holes > 0 && p.inpaint.backend == "embedded" && !p.oracle &&
+         p.inpainted_dir.empty();
+}
+
+bool CoarseValidatedBest(const HoleVariations& hole) {
+  return hole.choice >= 0 && size_t(hole.choice) < hole.candidates.size() &&
+         hole.candidates[size_t(hole.choice)] == "coarse";
+}
+
 void CheckHoleFillParams(const HoleFillParams& p) {
   using vcg_ext::RequireRange;
   if (p.mode != "direct" && p.mode != "paper")
@@ -599,8 +602,7 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
   };
   std::map<int, HoleWork> work; // by hole; nodes stay put while other threads insert
   std::mutex work_mutex;
-  const bool validates = !chosen && !params.oracle && params.inpainted_dir.empty() &&
-                         params.inpaint.backend == "embedded" && params.validation.fake_holes > 0;
+  const bool validates = !chosen && ValidatesOnFakeHoles(params);
   std::once_flag vf_once;
   std::unique_ptr<vcg_ext::VertexFaces> vf;
   auto fill_hole = [&](const vcg_ext::CoarseFillResult& coarse, int k, HoleImage& hi) {

@@ -81,6 +81,7 @@ struct HoleVariations {
   std::string problem;            ///< why there is nothing to choose from; empty if none
   GroundTruthSpread truth_spread; ///< with the oracle: the ground truth's and its image's
   double detail_scale = 0;        ///< the fill's vertex spacing in the image, pixels
+  double detail = 0; ///< embedded: the amplitude the variations have (validated, or given)
   /// Fake-hole validation, as in HoleFillReport; pick is 0 where "coarse" validated best.
   std::vector<std::string> candidates;
   std::vector<double> validation_errors, validation_detail;
@@ -98,6 +99,13 @@ struct HoleFillResult {
 /// Throws vcg_ext::InvalidParameterError naming the first parameter out of its range.
 void CheckHoleFillParams(const HoleFillParams& params);
 
+/// Whether FillHoles and InpaintHoles validate each hole on fake holes with these parameters
+/// (the embedded backend, fake holes asked for, no oracle and no hand-inpainted folder).
+bool ValidatesOnFakeHoles(const HoleFillParams& params);
+
+/// Whether the fake holes found the hole's coarse fill closest (then the automatic pick is 0).
+bool CoarseValidatedBest(const HoleVariations& hole);
+
 /// Fills the holes of `m` with detail. With `chosen` (from InpaintHoles on a copy of `m` with
 /// the same parameters, picks possibly changed) the backend is not asked again: each hole is
 /// deformed to its chosen variation, or keeps its coarse fill where the pick is 0. Throws
@@ -113,7 +121,8 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
 std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& params,
                                          vcg::CallBackPos* cb = nullptr);
 
-/// Asks the backend again for one hole (a "re-roll"): new variations, scores and pick.
+/// Asks the backend again for one hole (a "re-roll"): new variations (the embedded backend at
+/// the hole's own amplitude, `hole.detail`), scores and the automatic pick.
 void InpaintAgain(HoleVariations& hole, const InpaintParams& params);
 
 /// Scores a variation without ground truth (higher is better): how continuously the value

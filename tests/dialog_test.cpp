@@ -149,7 +149,7 @@ private slots:
       // The automatic pick: the best score, or Skip where the fake holes found the coarse
       // fill closest; the dialog shows the validation.
       QVERIFY(!hole.candidates.empty());
-      const bool coarse = hole.candidates[size_t(hole.choice)] == "coarse";
+      const bool coarse = curvature_inpaint::CoarseValidatedBest(hole);
       const int best =
           int(std::max_element(hole.scores.begin(), hole.scores.end()) - hole.scores.begin()) + 1;
       QCOMPARE(hole.pick, coarse ? 0 : best);

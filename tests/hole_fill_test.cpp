@@ -121,6 +121,15 @@ TEST(Detail, TheAmplitudeChangesTheFillAndZeroIsTheSmoothContinuation) {
       EXPECT_EQ(holes[0].variations[0], holes[0].variations[1]) << "no detail, nothing random";
     else
       EXPECT_NE(holes[0].variations[0], holes[0].variations[1]) << "each seed its own detail";
+    EXPECT_EQ(holes[0].detail, detail);
+    // A re-roll (new seed) keeps the hole's own amplitude, whatever the amplitude passed.
+    curvature_inpaint::HoleVariations again = holes[0];
+    curvature_inpaint::InpaintParams reroll = p.inpaint;
+    reroll.seed += 1000;
+    reroll.detail = 2 - detail;
+    curvature_inpaint::InpaintAgain(again, reroll);
+    ASSERT_EQ(again.variations.size(), 2u);
+    EXPECT_EQ(again.variations[0] == again.variations[1], detail == 0);
     const auto result = FillHoles(m, p);
     ASSERT_TRUE(result.holes[0].problem.empty()) << result.holes[0].problem;
     fills.emplace_back();

@@ -475,7 +475,7 @@ void HoleFillDialog::ShowHoles() {
     list->setMovement(QListView::Static);
     list->setMinimumHeight(kThumbnail + 48);
     // The automatic pick: the best score, or none (Skip) where the coarse fill validated best.
-    const bool coarse_chosen = hv.choice >= 0 && hv.candidates[size_t(hv.choice)] == "coarse";
+    const bool coarse_chosen = CoarseValidatedBest(hv);
     const int best =
         coarse_chosen
             ? -1
