@@ -4,7 +4,7 @@ MeshLab's Close Holes, hole by hole, on one half of the table.
 
     python3 bench/run_holdout_bench.py [--split test|tuning] [--plots] [--oracle]
                                        [--sweep-detail 0,0.5,1,2] [--variant "NAME=ARGS"]...
-                                       [-- FILL ARGS...]
+                                       [--only MESH[,MESH...]] [-- FILL ARGS...]
 
 Per hole: hole-region RMS (mean of both directions) and Hausdorff distance (the larger of
 both maxima), each as a ratio to CGAL's on the same hole (below 1: closer to the ground truth
@@ -14,7 +14,9 @@ the result is watertight and manifold and every input vertex kept bit for bit. -
 `fill --oracle` (the curvature image painted from the ground truth: the ceiling of any
 inpainter) with its per-stage curvature spreads. --sweep-detail runs `fill --detail A` for each
 A (choose the default on the tuning half); --variant runs `fill ARGS` as a column NAME ({gt} in
-ARGS is the hole's ground truth). --plots writes docs/holdout_rms_ratio.png and
+ARGS is the hole's ground truth); variants named after a validation candidate ("symmetry",
+"symmetry surface", with --pick K of that variation) enter the validated-choice table.
+--only keeps the rows of the named meshes (file names without .ply). --plots writes docs/holdout_rms_ratio.png and
 docs/holdout_detail_vs_rms.png (gnuplot). FILL ARGS go to every `fill` run.
 """
 import json
@@ -178,7 +180,7 @@ def print_report(rows, split, sweep, variants, oracle, plots):
     print("|---|---|---|---|---|---|---|---|")
     for k in methods + ["cgal"]:
         print(summary(k, rows, k))
-    if sweep:
+    if sweep or variants:
         # The validated choice against the best candidate by the ground truth on the real hole.
         hits = near = total = 0
         lines = []
@@ -188,7 +190,10 @@ def print_report(rows, split, sweep, variants, oracle, plots):
                 continue
             by_truth = {"coarse": r["coarse"]["rms"]}
             by_truth.update({f"detail {a}": r[f"detail {a}"]["rms"] for a in sweep})
+            by_truth.update({name: r[name]["rms"] for name, _ in variants if name in r})
             names = [c["name"] for c in v["candidates"] if c["name"] in by_truth]
+            if v["choice"] not in by_truth or not names:
+                continue
             best = min(names, key=lambda n: by_truth[n])
             total += 1
             hits += v["choice"] == best
@@ -237,7 +242,10 @@ def main():
         script = os.path.join(tmp, "close_holes.mlx")
         with open(script, "w") as f:
             f.write(CLOSE_HOLES)
+        only = argv[argv.index("--only") + 1].split(",") if "--only" in argv else None
         for mesh, seed, frac in holes(split):
+            if only and os.path.splitext(mesh)[0] not in only:
+                continue
             gt, inp, v = punch(tmp, mesh, seed, frac)
             out = os.path.join(tmp, "out.ply")
             row = {"name": f"{os.path.splitext(mesh)[0]}_{seed}", "vertex": v, "frac": frac,

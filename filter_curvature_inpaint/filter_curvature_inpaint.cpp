@@ -210,6 +210,10 @@ void FilterCurvatureInpaintPlugin::initParameterSet(QAction* action, MeshModel&,
                            "Embedded backend, with no fake holes: the amplitude of the "
                            "synthesised detail, relative to the surroundings' own (0-10; 0: "
                            "the smooth continuation of the curvature)."));
+    par.addParam(RichBool("Symmetry", d.symmetry.enabled, "Use the object's symmetry",
+                          "Find the mirror planes of the object; a hole whose mirror image is "
+                          "known surface gets its mirrored curvature and its mirrored surface as "
+                          "two more variations, used where the fake holes validate them."));
     AddPaperModeParams(par);
     par.addParam(
         RichEnum("Mode", 0,
@@ -357,6 +361,7 @@ bool FilterCurvatureInpaintPlugin::applyHoleFill(MeshModel& mm, const RichParame
   p.pick = par.getInt("Variation");
   p.validation.fake_holes = par.getInt("FakeHoles");
   p.inpaint.detail = par.getFloat("Detail");
+  p.symmetry.enabled = par.getBool("Symmetry");
   ReadDeformationParams(par, p);
   p.images.coarse.max_hole_edges = par.getInt("MaxHoleSize");
   p.images.coarse.keep_longest_open = par.getBool("KeepLongestOpen");

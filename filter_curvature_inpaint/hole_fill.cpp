@@ -93,17 +93,24 @@ void SavePng(const QImage& image, const std::string& path) {
     throw std::runtime_error("cannot write " + path);
 }
 
-/// Scores every variation and takes the given pick, or the automatic one: none where the
-/// coarse fill validated best, else the best score.
+/// Scores every variation and takes the given pick, or the automatic one.
 void ScoreAndPick(HoleVariations& hv, int pick) {
   hv.scores.clear();
   for (const QImage& v : hv.variations) hv.scores.push_back(ScoreVariation(v, hv.mask));
-  if (pick > 0)
-    hv.pick = std::min(pick, int(hv.variations.size()));
-  else if (CoarseValidatedBest(hv))
-    hv.pick = 0;
-  else
-    hv.pick = int(std::max_element(hv.scores.begin(), hv.scores.end()) - hv.scores.begin()) + 1;
+  hv.pick = pick > 0 ? std::min(pick, int(hv.variations.size())) : AutomaticPick(hv);
+}
+
+/// Variations without a kind (a hand-inpainted image, the oracle's) are continuations.
+const std::string& KindOf(const HoleVariations& hv, size_t j) {
+  static const std::string continuation = "continuation";
+  return j < hv.kinds.size() ? hv.kinds[j] : continuation;
+}
+
+/// The backend's completions as a hole's continuation variations.
+void SetContinuations(HoleVariations& hv, std::vector<QImage> images) {
+  hv.kinds.assign(images.size(), "continuation");
+  hv.surfaces.assign(images.size(), {});
+  hv.variations = std::move(images);
 }
 
 /// APSS mean curvature of every vertex of a (deformed) patch, from the patch alone.
@@ -114,6 +121,46 @@ std::vector<double> PatchCurvature(const std::vector<Eigen::Vector3d>& points,
   std::vector<int> query(points.size());
   for (size_t i = 0; i < query.size(); ++i) query[i] = int(i);
   return vcg_ext::ApssMeanCurvature(points, normals, query, apss);
+}
+
+/// The curvature of the deformed patch as an image, normalized like the coarse one.
+QImage FinalCurvatureImage(const HoleImage& hi, const std::vector<Eigen::Vector3d>& points,
+                           const vcg_ext::ApssParams& apss) {
+  const auto h = PatchCurvature(points, hi.patch.triangles, apss);
+  std::vector<double> value(h.size(), 0.5);
+  for (size_t i = 0; i < h.size(); ++i)
+    if (std::isfinite(h[i])) value[i] = std::max(0.0, std::min(1.0, 0.5 + 0.5 * h[i] / hi.scale));
+  return ToQImage(vcg_ext::RasterizeCurvature(hi.uv.uv, value, hi.patch.triangles, hi.patch.is_fill,
+                                              hi.image.size),
+                  false);
+}
+
+/// Backs `moved` (the patch with its fill moved) off towards the coarse fill, halving the way,
+/// while it folds a triangle over or makes the fill cross the patch (crossings the coarse fill
+/// already had do not count). Returns the halvings, or -1 when four did not undo it.
+int BackOff(const vcg_ext::PatchMesh& patch, std::vector<Eigen::Vector3d>& moved) {
+  const int crossings_before =
+      vcg_ext::CountSelfIntersections(patch.points, patch.triangles, patch.is_fill);
+  auto broken = [&] {
+    return Folded(patch.points, moved, patch) > 0 ||
+           vcg_ext::CountSelfIntersections(moved, patch.triangles, patch.is_fill) >
+               crossings_before;
+  };
+  int halvings = 0;
+  for (; broken(); ++halvings) {
+    if (halvings == 4) return -1;
+    for (size_t i = 0; i < moved.size(); ++i)
+      moved[i] = patch.points[i] + 0.5 * (moved[i] - patch.points[i]);
+  }
+  return halvings;
+}
+
+/// The colour-map value of `image` at each fill vertex of the patch (0.5 elsewhere).
+std::vector<double> TargetValues(const HoleImage& hi, const QImage& image) {
+  std::vector<double> target(hi.patch.points.size(), 0.5);
+  for (size_t i = 0; i < target.size(); ++i)
+    if (hi.is_new[i]) target[i] = SampleValue(image, hi.uv.uv[i]);
+  return target;
 }
 
 /// Stage 9 on one patch: its free vertices moved to the curvature of `target_image`.
@@ -128,10 +175,8 @@ PatchDeformation DeformPatch(const HoleImage& hi, const QImage& target_image,
                              const HoleFillParams& params) {
   PatchDeformation out;
   const std::vector<char>& free = hi.is_new;
-  std::vector<double>& target = out.target;
-  target.assign(hi.patch.points.size(), 0.5);
-  for (size_t i = 0; i < target.size(); ++i)
-    if (free[i]) target[i] = SampleValue(target_image, hi.uv.uv[i]);
+  out.target = TargetValues(hi, target_image);
+  const std::vector<double>& target = out.target;
   std::vector<Eigen::Vector3d>& moved = out.points;
   moved = hi.patch.points;
   vcg_ext::DeformationResult& dr = out.result;
@@ -146,23 +191,9 @@ PatchDeformation DeformPatch(const HoleImage& hi, const QImage& target_image,
     dr = vcg_ext::DeformToCurvaturePaper(moved, hi.patch.triangles, free, target, hi.scale,
                                          params.paper);
   }
-  // Back off towards the coarse fill while the deformation folds a triangle over or makes the
-  // fill cross the patch (crossings the coarse fill already had do not count).
-  const int crossings_before =
-      vcg_ext::CountSelfIntersections(hi.patch.points, hi.patch.triangles, hi.patch.is_fill);
-  auto broken = [&] {
-    return Folded(hi.patch.points, moved, hi.patch) > 0 ||
-           vcg_ext::CountSelfIntersections(moved, hi.patch.triangles, hi.patch.is_fill) >
-               crossings_before;
-  };
-  for (int backoff = 0; dr.solved && broken(); ++backoff) {
-    if (backoff == 4) {
-      dr.solved = false;
-      break;
-    }
-    ++out.backoffs;
-    for (size_t i = 0; i < moved.size(); ++i)
-      moved[i] = hi.patch.points[i] + 0.5 * (moved[i] - hi.patch.points[i]);
+  if (dr.solved) {
+    out.backoffs = BackOff(hi.patch, moved);
+    if (out.backoffs < 0) dr.solved = false, out.backoffs = 4;
   }
   return out;
 }
@@ -184,8 +215,37 @@ double FillSpacingPixels(const HoleImage& hi) {
 struct ValidationContext {
   const CMeshO* mesh = nullptr;
   const vcg_ext::CoarseFillResult* coarse = nullptr;
-  const vcg_ext::VertexFaces* vf = nullptr;
+  const vcg_ext::VertexFaces* vf = nullptr; ///< null where no hole is validated
+  const SymmetryPrior* symmetry = nullptr;  ///< null where the prior is off
 };
+
+/// Whether FillHoles and InpaintHoles look for the object's symmetry with these parameters.
+bool UsesSymmetry(const HoleFillParams& p) {
+  return p.symmetry.enabled && !p.oracle && p.inpainted_dir.empty();
+}
+
+/// The patch's fill from its mirror image (MirrorHole; `frame` the patch's unit box), backed
+/// off where it would fold or cross the patch.
+vcg_ext::MirroredFill
+MirroredPatch(const SymmetryPrior& prior, const HoleImage& hi, const vcg_ext::UnitBox& frame,
+              const HoleFillParams& params,
+              const Eigen::Vector3d& excluded_centre = Eigen::Vector3d::Zero(),
+              double excluded_radius = 0) {
+  vcg_ext::MirroredFill f = MirrorHole(prior, hi.patch, hi.is_new, frame, params.symmetry.fill,
+                                       excluded_centre, excluded_radius);
+  if (f.problem.empty() && BackOff(hi.patch, f.points) < 0) {
+    f.points.clear();
+    f.problem = "its mirror image would fold the patch or make it cross itself";
+  }
+  return f;
+}
+
+/// The mirrored fill's curvature as a variation of the hole's image.
+QImage SymmetryImage(const HoleImage& hi, const vcg_ext::MirroredFill& mirror,
+                     const HoleFillParams& params) {
+  return KnownPixelsKept(FinalCurvatureImage(hi, mirror.points, params.images.apss),
+                         ToQImage(hi.image, false), MaskImage(hi.image));
+}
 
 /// The fill triangles of a patch.
 std::vector<std::array<int, 3>> FillTriangles(const vcg_ext::PatchMesh& patch) {
@@ -196,15 +256,22 @@ std::vector<std::array<int, 3>> FillTriangles(const vcg_ext::PatchMesh& patch) {
 }
 
 /// Fake-hole validation of hole `hi` (embedded backend): every candidate (the coarse fill, the
-/// embedded inpainter at each detail amplitude) fills fake holes of its size near it and is
-/// scored against the surface that was cut out; `hv` gets the candidates, their errors and the
-/// choice (-1 when there was no room for fake holes: the variation score then chooses alone).
+/// embedded inpainter at each detail amplitude, and with `symmetric` the mirror image's
+/// curvature and surface) fills fake holes of its size near it and is scored against the
+/// surface that was cut out; `hv` gets the candidates, their errors and the choice (-1 when
+/// there was no room for fake holes: the variation score then chooses alone).
 void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const InpaintParams& inpaint,
-                  const ValidationContext& ctx, HoleVariations& hv) {
+                  const ValidationContext& ctx, bool symmetric, HoleVariations& hv) {
   const ValidationParams& vp = params.validation;
   if (vp.coarse) hv.candidates.push_back("coarse");
+  const size_t first_detail = hv.candidates.size();
   for (double a : vp.details)
     hv.candidates.push_back("detail " + QString::number(a, 'g', 3).toStdString());
+  const size_t first_prior = hv.candidates.size();
+  if (symmetric) {
+    hv.candidates.push_back("symmetry");
+    hv.candidates.push_back("symmetry surface");
+  }
   FakeHoleParams fp;
   fp.count = vp.fake_holes;
   fp.seed = params.inpaint.seed;
@@ -256,11 +323,23 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
     one.detail_scale = FillSpacingPixels(f);
     const std::vector<QImage> completed =
         InpaintEmbeddedAmplitudes(ToQImage(f.image, false), MaskImage(f.image), one, vp.details);
+    // The fake hole's mirror image, on the known surface without the fake hole's own (which
+    // the whole mesh still has): where it has none, the symmetry candidates keep the coarse
+    // fill there, as the real hole would.
+    vcg_ext::MirroredFill mirror;
+    if (symmetric)
+      mirror = MirroredPatch(*ctx.symmetry, f, t.images.coarse.box, params, t.fake->centre,
+                             1.25 * t.fake->radius / t.images.coarse.box.scale);
     for (size_t c = 0; c < n; ++c) {
       t.fills.push_back(f.patch.points);
-      if (!(vp.coarse && c == 0)) {
-        PatchDeformation d = DeformPatch(f, completed.at(c - (vp.coarse ? 1 : 0)), direct);
+      if (c >= first_detail && c < first_prior) {
+        PatchDeformation d = DeformPatch(f, completed.at(c - first_detail), direct);
         if (d.result.solved) t.fills.back() = std::move(d.points);
+      } else if (c == first_prior && mirror.problem.empty() && !mirror.points.empty()) {
+        PatchDeformation d = DeformPatch(f, SymmetryImage(f, mirror, params), direct);
+        if (d.result.solved) t.fills.back() = std::move(d.points);
+      } else if (c == first_prior + 1 && mirror.problem.empty() && !mirror.points.empty()) {
+        t.fills.back() = mirror.points;
       }
       error[c] += FakeHoleError(*t.fake, t.fills.back(), fill) / t.fake->radius;
     }
@@ -309,7 +388,7 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
   hv.validation_errors = error;
   hv.validation_detail = detail;
   hv.choice = int(choice);
-  if (!CoarseValidatedBest(hv)) hv.detail = vp.details[choice - (vp.coarse ? 1 : 0)];
+  if (choice >= first_detail && choice < first_prior) hv.detail = vp.details[choice - first_detail];
   if (!why.empty()) hv.validation_note = why;
 }
 
@@ -336,11 +415,27 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& 
   } else if (params.inpainted_dir.empty()) {
     hv.detail_scale = FillSpacingPixels(hi);
     hv.detail = inpaint.detail;
-    if (ctx.mesh && ValidatesOnFakeHoles(params)) ValidateHole(hi, params, inpaint, ctx, hv);
+    vcg_ext::MirroredFill mirror;
+    if (ctx.symmetry) {
+      mirror = MirroredPatch(*ctx.symmetry, hi, ctx.coarse->box, params);
+      hv.symmetry_note = mirror.problem;
+    }
+    const bool symmetric = ctx.symmetry && mirror.problem.empty();
+    if (ctx.vf && ValidatesOnFakeHoles(params))
+      ValidateHole(hi, params, inpaint, ctx, symmetric, hv);
     InpaintParams at_scale = inpaint;
     at_scale.detail = hv.detail;
     if (at_scale.detail_scale <= 0) at_scale.detail_scale = hv.detail_scale;
-    hv.variations = Inpaint(hv.image, hv.mask, at_scale);
+    SetContinuations(hv, Inpaint(hv.image, hv.mask, at_scale));
+    if (symmetric) {
+      const QImage image = SymmetryImage(hi, mirror, params);
+      hv.variations.push_back(image);
+      hv.kinds.push_back("symmetry");
+      hv.surfaces.emplace_back();
+      hv.variations.push_back(image);
+      hv.kinds.push_back("symmetry surface");
+      hv.surfaces.push_back(std::move(mirror.points));
+    }
   } else {
     const std::string base = params.inpainted_dir + "/hole_" + std::to_string(k + 1);
     CheckMatchesFolder(base + ".json", hi);
@@ -364,18 +459,6 @@ InpaintParams WithCancel(const HoleFillParams& params, vcg::CallBackPos* cb, con
       return !cb(*progress, "Curvature Inpaint: waiting for the inpainter");
     };
   return inpaint;
-}
-
-/// The curvature of the deformed patch as an image, normalized like the coarse one.
-QImage FinalCurvatureImage(const HoleImage& hi, const std::vector<Eigen::Vector3d>& points,
-                           const vcg_ext::ApssParams& apss) {
-  const auto h = PatchCurvature(points, hi.patch.triangles, apss);
-  std::vector<double> value(h.size(), 0.5);
-  for (size_t i = 0; i < h.size(); ++i)
-    if (std::isfinite(h[i])) value[i] = std::max(0.0, std::min(1.0, 0.5 + 0.5 * h[i] / hi.scale));
-  return ToQImage(vcg_ext::RasterizeCurvature(hi.uv.uv, value, hi.patch.triangles, hi.patch.is_fill,
-                                              hi.image.size),
-                  false);
 }
 
 /// One row of the montage: coarse, mask, variations (the pick framed), final.
@@ -435,16 +518,37 @@ void DeformHole(const HoleImage& hi, size_t k, const vcg_ext::CoarseFillResult& 
   report.inpaint_s = hv.inpaint_s;
   report.truth_spread = hv.truth_spread;
   report.scores = hv.scores;
+  for (size_t j = 0; j < hv.variations.size(); ++j) report.kinds.push_back(KindOf(hv, j));
   report.pick = hv.pick;
   if (!hv.problem.empty()) {
     report.problem = hv.problem;
     return;
   }
   const QImage& target_image = hv.variations[report.pick - 1];
+  report.kind = KindOf(hv, size_t(report.pick - 1));
+  const std::vector<Eigen::Vector3d>* surface =
+      size_t(report.pick - 1) < hv.surfaces.size() && !hv.surfaces[report.pick - 1].empty()
+          ? &hv.surfaces[report.pick - 1]
+          : nullptr;
+  if (surface && surface->size() != hi.patch.points.size())
+    throw std::runtime_error("the previewed hole " + std::to_string(k + 1) +
+                             " differs from the mesh's: preview again with the same settings");
 
   const auto t = Clock::now();
   const std::vector<char>& free = hi.is_new;
-  PatchDeformation deformed = DeformPatch(hi, target_image, params);
+  PatchDeformation deformed;
+  if (surface) {
+    // A prior's surface: the hole takes it as it is (it was backed off where it folded).
+    deformed.points = *surface;
+    deformed.target = TargetValues(hi, target_image);
+    deformed.result.solved = true;
+    for (size_t i = 0; i < free.size(); ++i)
+      if (free[i])
+        deformed.result.max_move =
+            std::max(deformed.result.max_move, (deformed.points[i] - hi.patch.points[i]).norm());
+  } else {
+    deformed = DeformPatch(hi, target_image, params);
+  }
   const std::vector<double>& target = deformed.target;
   std::vector<Eigen::Vector3d>& moved = deformed.points;
   const vcg_ext::DeformationResult& dr = deformed.result;
@@ -478,7 +582,19 @@ void InpaintAgain(HoleVariations& hole, const InpaintParams& params) {
   InpaintParams at_scale = params;
   at_scale.detail = hole.detail;
   if (at_scale.detail_scale <= 0) at_scale.detail_scale = hole.detail_scale;
-  hole.variations = Inpaint(hole.image, hole.mask, at_scale);
+  // New continuations; the priors' variations (which no seed changes) stay after them.
+  HoleVariations priors;
+  for (size_t j = 0; j < hole.variations.size(); ++j)
+    if (KindOf(hole, j) != "continuation") {
+      priors.variations.push_back(hole.variations[j]);
+      priors.kinds.push_back(hole.kinds[j]);
+      priors.surfaces.push_back(j < hole.surfaces.size() ? hole.surfaces[j]
+                                                         : std::vector<Eigen::Vector3d>());
+    }
+  SetContinuations(hole, Inpaint(hole.image, hole.mask, at_scale));
+  hole.variations.insert(hole.variations.end(), priors.variations.begin(), priors.variations.end());
+  hole.kinds.insert(hole.kinds.end(), priors.kinds.begin(), priors.kinds.end());
+  hole.surfaces.insert(hole.surfaces.end(), priors.surfaces.begin(), priors.surfaces.end());
   hole.inpaint_s = Since(t);
   ScoreAndPick(hole, 0);
 }
@@ -492,7 +608,10 @@ std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& 
   int progress = 0;
   const InpaintParams inpaint = WithCancel(params, cb, &progress);
   const vcg_ext::VertexFaces vf(scratch);
-  const ValidationContext ctx{&scratch, &images.coarse, &vf};
+  const std::unique_ptr<SymmetryPrior> symmetry =
+      UsesSymmetry(params) ? DetectSymmetry(scratch, images.coarse, params.symmetry.detection)
+                           : nullptr;
+  const ValidationContext ctx{&scratch, &images.coarse, &vf, symmetry.get()};
   std::vector<HoleVariations> holes;
   for (size_t k = 0; k < images.holes.size(); ++k) {
     progress = int(100.0 * k / images.holes.size());
@@ -560,6 +679,20 @@ bool CoarseValidatedBest(const HoleVariations& hole) {
          hole.candidates[size_t(hole.choice)] == "coarse";
 }
 
+int AutomaticPick(const HoleVariations& hole) {
+  if (CoarseValidatedBest(hole)) return 0;
+  if (hole.choice >= 0 && size_t(hole.choice) < hole.candidates.size())
+    for (size_t j = 0; j < hole.variations.size(); ++j)
+      if (KindOf(hole, j) == hole.candidates[size_t(hole.choice)]) return int(j) + 1;
+  // A prior's variation is chosen only where it validated best: nothing is forced on a hole.
+  int best = 0;
+  for (size_t j = 0; j < hole.variations.size() && j < hole.scores.size(); ++j)
+    if (KindOf(hole, j) == "continuation" &&
+        (best == 0 || hole.scores[j] > hole.scores[size_t(best - 1)]))
+      best = int(j) + 1;
+  return best > 0 || hole.variations.empty() ? best : 1;
+}
+
 void CheckHoleFillParams(const HoleFillParams& p) {
   using vcg_ext::RequireRange;
   if (p.mode != "direct" && p.mode != "paper")
@@ -603,8 +736,10 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
   std::map<int, HoleWork> work; // by hole; nodes stay put while other threads insert
   std::mutex work_mutex;
   const bool validates = !chosen && ValidatesOnFakeHoles(params);
-  std::once_flag vf_once;
+  const bool symmetric = !chosen && UsesSymmetry(params);
+  std::once_flag context_once;
   std::unique_ptr<vcg_ext::VertexFaces> vf;
+  std::unique_ptr<SymmetryPrior> symmetry;
   auto fill_hole = [&](const vcg_ext::CoarseFillResult& coarse, int k, HoleImage& hi) {
     if (chosen && size_t(k) >= chosen->size())
       throw std::runtime_error("the previewed variations are for " +
@@ -615,12 +750,16 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
       std::lock_guard<std::mutex> lock(work_mutex);
       w = &work[k];
     }
-    // The validation reads the filled mesh around each hole: its vertex-face adjacency is
-    // built once, by the first hole that needs it (every coarse fill is in place by then).
+    // The validation reads the filled mesh around each hole, the symmetry prior its scan part:
+    // the vertex-face adjacency and the symmetry planes are found once, by the first hole that
+    // needs them (every coarse fill is in place by then).
     ValidationContext ctx;
-    if (validates) {
-      std::call_once(vf_once, [&] { vf = std::make_unique<vcg_ext::VertexFaces>(m); });
-      ctx = ValidationContext{&m, &coarse, vf.get()};
+    if (validates || symmetric) {
+      std::call_once(context_once, [&] {
+        if (validates) vf = std::make_unique<vcg_ext::VertexFaces>(m);
+        if (symmetric) symmetry = DetectSymmetry(m, coarse, params.symmetry.detection);
+      });
+      ctx = ValidationContext{&m, &coarse, vf.get(), symmetry.get()};
     }
     HoleVariations hv;
     QImage final_image;
@@ -660,6 +799,12 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
                                     std::to_string(done) + " of " + std::to_string(count);
             return !cb || cb(progress, msg.c_str());
           });
+    }
+    if (symmetry) {
+      result.symmetry_detected = true;
+      result.symmetry = symmetry->planes;
+      result.symmetry_best = symmetry->best;
+      result.symmetry_s = symmetry->seconds;
     }
     std::vector<QImage> montage_rows;
     for (size_t k = 0; k < images.holes.size(); ++k) {
@@ -719,6 +864,8 @@ std::string DescribeValidation(const std::vector<std::string>& candidates,
 
 std::vector<std::string> DescribeHoleFill(const HoleFillResult& result) {
   std::vector<std::string> lines = DescribeCoarseFill(result.coarse);
+  if (result.symmetry_detected)
+    lines.push_back(DescribeSymmetry(result.symmetry, result.symmetry_best));
   char buf[512];
   for (size_t k = 0; k < result.holes.size(); ++k) {
     const auto& r = result.holes[k];
@@ -732,11 +879,13 @@ std::vector<std::string> DescribeHoleFill(const HoleFillResult& result) {
       std::string scores;
       for (double s : r.scores)
         scores += (scores.empty() ? "" : " ") + QString::number(s, 'g', 4).toStdString();
-      std::snprintf(buf, sizeof buf,
-                    "detail %zu: %d edges, variation %d of %zu (scores %s), %d deformation steps, "
-                    "images %.0f ms, inpaint %.0f ms, deform %.0f ms",
-                    k + 1, r.boundary_edges, r.pick, r.scores.size(), scores.c_str(), r.iterations,
-                    1000 * r.images_s, 1000 * r.inpaint_s, 1000 * r.deform_s);
+      const std::string kind = r.kind == "continuation" ? "" : " " + r.kind;
+      std::snprintf(
+          buf, sizeof buf,
+          "detail %zu: %d edges, variation %d%s of %zu (scores %s), %d deformation steps, "
+          "images %.0f ms, inpaint %.0f ms, deform %.0f ms",
+          k + 1, r.boundary_edges, r.pick, kind.c_str(), r.scores.size(), scores.c_str(),
+          r.iterations, 1000 * r.images_s, 1000 * r.inpaint_s, 1000 * r.deform_s);
     }
     lines.emplace_back(buf);
   }
@@ -747,13 +896,26 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
   std::ostringstream o;
   o.precision(6);
   o << "{\n  \"backend\": \"" << params.inpaint.backend << "\",\n  \"mode\": \"" << params.mode
-    << "\",\n  \"holes\": [";
+    << "\",\n";
+  if (result.symmetry_detected) {
+    o << "  \"symmetry\": {\"seconds\": " << result.symmetry_s << ", \"planes\": [";
+    for (size_t k = 0; k < result.symmetry.size(); ++k) {
+      const auto& p = result.symmetry[k];
+      o << (k ? ", " : "") << "{\"normal\": [" << p.normal.x() << ", " << p.normal.y() << ", "
+        << p.normal.z() << "], \"offset\": " << p.offset << ", \"coverage\": " << p.coverage
+        << ", \"residual\": " << p.residual << "}";
+    }
+    o << "], \"best_coverage\": " << result.symmetry_best.coverage << "},\n";
+  }
+  o << "  \"holes\": [";
   for (size_t k = 0; k < result.holes.size(); ++k) {
     const auto& r = result.holes[k];
     o << (k ? ",\n" : "\n") << "    {\"hole\": " << k + 1
       << ", \"boundary_edges\": " << r.boundary_edges << ", \"new_vertices\": " << r.new_vertices
       << ", \"scores\": [";
     for (size_t j = 0; j < r.scores.size(); ++j) o << (j ? ", " : "") << r.scores[j];
+    o << "], \"kinds\": [";
+    for (size_t j = 0; j < r.kinds.size(); ++j) o << (j ? ", " : "") << '"' << r.kinds[j] << '"';
     o << "]";
     if (!r.candidates.empty()) {
       o << ", \"validation\": {\"fake_holes\": " << r.fake_holes << ", \"candidates\": [";
@@ -763,10 +925,12 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
           << ", \"detail_ratio\": " << r.validation_detail[c] << "}";
       o << "], \"choice\": \"" << r.candidates[size_t(r.choice)] << "\"}";
     }
-    o << ", \"pick\": " << r.pick << ", \"iterations\": " << r.iterations
-      << ", \"backoffs\": " << r.backoffs << ", \"max_move\": " << r.max_move
-      << ", \"seconds\": {\"coarse\": " << r.coarse_s << ", \"images\": " << r.images_s
-      << ", \"inpaint\": " << r.inpaint_s << ", \"deform\": " << r.deform_s << "}";
+    o << ", \"pick\": " << r.pick;
+    if (!r.kind.empty()) o << ", \"kind\": \"" << r.kind << "\"";
+    o << ", \"iterations\": " << r.iterations << ", \"backoffs\": " << r.backoffs
+      << ", \"max_move\": " << r.max_move << ", \"seconds\": {\"coarse\": " << r.coarse_s
+      << ", \"images\": " << r.images_s << ", \"inpaint\": " << r.inpaint_s
+      << ", \"deform\": " << r.deform_s << "}";
     if (params.measure_detail)
       o << ", \"curvature_spread\": {\"truth\": " << r.truth_spread.truth
         << ", \"truth_image\": " << r.truth_spread.image << ", \"target\": " << r.target_spread

@@ -6,6 +6,7 @@
 #include "curvature_images.h"
 #include "ground_truth_image.h"
 #include "inpaint/inpainter.h"
+#include "symmetry_prior.h"
 
 #include <vcg_ext/curvature_deformation.h>
 
@@ -34,6 +35,10 @@ struct HoleFillParams {
   vcg_ext::DirectDeformationParams direct;
   vcg_ext::PaperDeformationParams paper;
   ValidationParams validation;
+  /// The object's mirror image as a prior: each hole whose mirror image is known surface gets
+  /// two more variations, its mirrored curvature ("symmetry") and the mirrored surface itself
+  /// ("symmetry surface"), which the fake-hole validation weighs against the rest.
+  SymmetryPriorParams symmetry;
   std::string images_dir; ///< where to write every hole's images; empty: nowhere
   /// Instead of a backend: the folder where the Curvature Images stage wrote hole_<k>.json and
   /// a person (in any image editor) left hole_<k>_inpainted.png. The patches are rebuilt with
@@ -50,10 +55,12 @@ struct HoleFillReport {
   int hole = 0; ///< index into the coarse result's holes
   int boundary_edges = 0;
   int new_vertices = 0;
-  std::vector<double> scores; ///< per variation: higher is better
-  int pick = 0;               ///< 1-based
-  int iterations = 0;         ///< deformation solves (direct) or steps (paper)
+  std::vector<double> scores;     ///< per variation: higher is better
+  std::vector<std::string> kinds; ///< per variation (see HoleVariations::kinds)
+  int pick = 0;                   ///< 1-based
+  int iterations = 0;             ///< deformation solves (direct) or steps (paper)
   int backoffs = 0;           ///< halvings towards the coarse fill that undid a fold or crossing
+  std::string kind;           ///< of the variation picked (see HoleVariations::kinds)
   std::vector<int> differing; ///< paper mode: differing vertices per step
   double max_move = 0;        ///< unit-box units
   double coarse_s = 0, images_s = 0, inpaint_s = 0, deform_s = 0;
@@ -74,8 +81,13 @@ struct HoleFillReport {
 
 /// One hole's inpainting (stages 3-8) as a person previews it and FillHoles applies it.
 struct HoleVariations {
-  QImage image, mask;             ///< the coarse curvature image and its hole (white)
-  std::vector<QImage> variations; ///< the backend's completions of `image`
+  QImage image, mask; ///< the coarse curvature image and its hole (white)
+  /// The backend's completions of `image` ("continuation"), then the priors' variations.
+  std::vector<QImage> variations;
+  std::vector<std::string> kinds; ///< per variation: "continuation", "symmetry", ...
+  /// Per variation: empty where the patch is deformed to the image's curvature, else the
+  /// patch (unit box) the hole takes as it is ("symmetry surface").
+  std::vector<std::vector<Eigen::Vector3d>> surfaces;
   std::vector<double> scores;     ///< ScoreVariation of each
   int pick = 0;                   ///< 1-based; 0: the hole keeps its coarse fill
   std::string problem;            ///< why there is nothing to choose from; empty if none
@@ -88,12 +100,17 @@ struct HoleVariations {
   int choice = -1;
   int fake_holes = 0;
   std::string validation_note;
+  std::string symmetry_note; ///< why the hole has no symmetry variation; empty if it has
   double images_s = 0, inpaint_s = 0;
 };
 
 struct HoleFillResult {
   vcg_ext::CoarseFillResult coarse;
   std::vector<HoleFillReport> holes;
+  bool symmetry_detected = false;               ///< the prior ran (some hole needed it)
+  std::vector<vcg_ext::SymmetryPlane> symmetry; ///< the planes it found
+  vcg_ext::SymmetryPlane symmetry_best;         ///< the best-covering plane, found or not
+  double symmetry_s = 0;
 };
 
 /// Throws vcg_ext::InvalidParameterError naming the first parameter out of its range.
@@ -105,6 +122,10 @@ bool ValidatesOnFakeHoles(const HoleFillParams& params);
 
 /// Whether the fake holes found the hole's coarse fill closest (then the automatic pick is 0).
 bool CoarseValidatedBest(const HoleVariations& hole);
+
+/// The automatic pick (1-based; 0: keep the coarse fill): the validated choice where it is a
+/// prior's variation or the coarse fill, else the best-scored continuation.
+int AutomaticPick(const HoleVariations& hole);
 
 /// Fills the holes of `m` with detail. With `chosen` (from InpaintHoles on a copy of `m` with
 /// the same parameters, picks possibly changed) the backend is not asked again: each hole is

@@ -318,9 +318,13 @@ class DetailAndValidation(TempDirTest):
         self.assertGreater(moved, 1e-4)
         for h in holes0 + holes2:
             self.assertNotIn("validation", h)  # an amplitude given: no fake holes
-        # Detail 0 is the smooth continuation: every variation the same.
-        self.assertTrue(all(len(set(h["scores"])) == 1 for h in holes0), holes0)
-        self.assertTrue(any(len(set(h["scores"])) > 1 for h in holes2), holes2)
+        # Detail 0 is the smooth continuation: every continuation the same (the symmetry
+        # prior's variations, where a hole has them, come after the continuations).
+        def continuations(h):
+            return [s for s, kind in zip(h["scores"], h["kinds"]) if kind == "continuation"]
+        self.assertTrue(all(len(continuations(h)) == 4 for h in holes0 + holes2))
+        self.assertTrue(all(len(set(continuations(h))) == 1 for h in holes0), holes0)
+        self.assertTrue(any(len(set(continuations(h))) > 1 for h in holes2), holes2)
 
     def test_fake_holes_choose_and_the_log_says_how(self):
         _, holes, log = self.fill()
@@ -328,7 +332,10 @@ class DetailAndValidation(TempDirTest):
         for k, h in enumerate(holes, 1):
             v = h["validation"]
             names = [c["name"] for c in v["candidates"]]
-            self.assertEqual(names, ["coarse", "detail 0", "detail 0.5", "detail 1", "detail 2"])
+            self.assertEqual(names[:5], ["coarse", "detail 0", "detail 0.5", "detail 1", "detail 2"])
+            # Where the hole's mirror image is known surface, the symmetry prior's two more.
+            self.assertIn(names[5:], [[], ["symmetry", "symmetry surface"]])
+            self.assertEqual(names[5:], [k for k in h["kinds"] if k != "continuation"])
             self.assertGreaterEqual(v["fake_holes"], 1)
             errors = {c["name"]: c["error"] for c in v["candidates"]}
             best = min(errors.values())

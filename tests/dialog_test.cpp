@@ -4,6 +4,7 @@
 #include "hole_fill_dialog.h"
 #include "mesh_io.h"
 #include "pipeline.h"
+#include "symmetric_egg.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -145,14 +146,24 @@ private slots:
     QCOMPARE(int(d.Holes().size()), 3);
     for (const auto& hole : d.Holes()) {
       QVERIFY(hole.problem.empty());
-      QCOMPARE(int(hole.variations.size()), 3);
-      // The automatic pick: the best score, or Skip where the fake holes found the coarse
-      // fill closest; the dialog shows the validation.
+      // Three continuations, then the priors' variations where the hole has them.
+      QVERIFY(hole.variations.size() >= 3);
+      QCOMPARE(hole.kinds.size(), hole.variations.size());
+      for (size_t j = 0; j < 3; ++j) QCOMPARE(hole.kinds[j], std::string("continuation"));
+      // The automatic pick: Skip where the fake holes found the coarse fill closest, a prior's
+      // variation where it validated best, else the best-scored continuation; the dialog
+      // shows the validation.
       QVERIFY(!hole.candidates.empty());
-      const bool coarse = curvature_inpaint::CoarseValidatedBest(hole);
-      const int best =
-          int(std::max_element(hole.scores.begin(), hole.scores.end()) - hole.scores.begin()) + 1;
-      QCOMPARE(hole.pick, coarse ? 0 : best);
+      const std::string& choice = hole.candidates[size_t(hole.choice)];
+      const int best = int(std::max_element(hole.scores.begin(), hole.scores.begin() + 3) -
+                           hole.scores.begin()) +
+                       1;
+      if (choice == "coarse")
+        QCOMPARE(hole.pick, 0);
+      else if (choice.rfind("symmetry", 0) == 0)
+        QCOMPARE(hole.kinds[size_t(hole.pick - 1)], choice);
+      else
+        QCOMPARE(hole.pick, best);
     }
     QVERIFY(Find<QLabel>(d, "validation_1")->text().contains("chose"));
     QVERIFY(d.windowTitle().contains("3 of 3 holes ready"));
@@ -186,6 +197,49 @@ private slots:
 
     QTest::mouseClick(Find<QPushButton>(d, "apply"), Qt::LeftButton);
     QCOMPARE(d.result(), int(QDialog::Accepted));
+  }
+
+  void symmetry_variations_carry_their_kind_and_apply() {
+    // A mirror-symmetric egg with a hole over one of its bumps.
+    CMeshO egg;
+    test::MakeSymmetricEgg(egg);
+    const Eigen::Vector3d bump = test::EggBumps()[0];
+    test::PunchBump(egg, bump);
+    const size_t scan_vertices = egg.vert.size();
+    HoleFillDialog d(egg);
+    d.show();
+    Find<QSpinBox>(d, "variations")->setValue(2);
+    Find<QSpinBox>(d, "fakeHoles")->setValue(0); // the automatic pick is then a continuation
+    QVERIFY(Find<QCheckBox>(d, "symmetry")->isChecked());
+    d.Inpaint();
+    QTRY_VERIFY_WITH_TIMEOUT(!d.Busy(), 120000);
+    QCOMPARE(int(d.Holes().size()), 1);
+    const auto& hole = d.Holes()[0];
+    QVERIFY2(hole.problem.empty(), hole.problem.c_str());
+    QVERIFY2(hole.symmetry_note.empty(), hole.symmetry_note.c_str());
+    QCOMPARE(hole.kinds, (std::vector<std::string>{"continuation", "continuation", "symmetry",
+                                                   "symmetry surface"}));
+    QCOMPARE(hole.kinds[size_t(hole.pick - 1)], std::string("continuation"));
+    // Each item says its kind; clicking the mirrored surface chooses it.
+    auto* list = Find<QListWidget>(d, "variations_1");
+    QCOMPARE(list->count(), 4);
+    QVERIFY(list->item(2)->text().contains("symmetry"));
+    QCOMPARE(list->item(3)->data(Qt::UserRole).toString(), QString("symmetry surface"));
+    QTest::mouseClick(list->viewport(), Qt::LeftButton, {},
+                      list->visualItemRect(list->item(3)).center());
+    QCOMPARE(d.Holes()[0].pick, 4);
+    // Apply's input: the hole takes the mirrored surface, bump and all.
+    CMeshO applied;
+    curvature_inpaint::CopyMesh(egg, applied);
+    const auto result = curvature_inpaint::FillHoles(applied, d.Params(), nullptr, &d.Holes());
+    QCOMPARE(result.holes[0].kind, std::string("symmetry surface"));
+    QVERIFY(std::abs(test::FillHeight(applied, scan_vertices, bump) - test::kEggBump) <
+            0.1 * test::kEggBump);
+    // Unchecked, the preview offers the continuations alone.
+    Find<QCheckBox>(d, "symmetry")->setChecked(false);
+    d.Inpaint();
+    QTRY_VERIFY_WITH_TIMEOUT(!d.Busy(), 120000);
+    QCOMPARE(d.Holes()[0].kinds, (std::vector<std::string>{"continuation", "continuation"}));
   }
 
   void reroll_replaces_one_hole() {

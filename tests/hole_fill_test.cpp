@@ -3,6 +3,7 @@
 #include "fake_holes.h"
 #include "hole_fill.h"
 #include "pipeline.h"
+#include "symmetric_egg.h"
 
 #include <vcg/complex/algorithms/create/platonic.h>
 #include <vcg_ext/punch_hole.h>
@@ -250,6 +251,50 @@ TEST(FakeHoles, TheValidatedChoiceIsTheSameForAnyThreadCount) {
   EXPECT_EQ(choices[0], choices[1]);
   ASSERT_EQ(results[0].size(), results[1].size());
   for (size_t i = 0; i < results[0].size(); ++i) ASSERT_EQ(results[0][i], results[1][i]) << i;
+}
+
+TEST(Symmetry, AHoleOverABumpComesBackLikeItsTwin) {
+  CMeshO m;
+  test::MakeSymmetricEgg(m);
+  const Eigen::Vector3d bump = test::EggBumps()[0];
+  test::PunchBump(m, bump);
+  const size_t scan_vertices = m.vert.size();
+  HoleFillParams p = SmallImages();
+  CMeshO coarse;
+  curvature_inpaint::CopyMesh(m, coarse);
+  curvature_inpaint::CoarseFill(coarse, p.images.coarse);
+  EXPECT_LT(test::FillHeight(coarse, scan_vertices, bump), 0.5 * test::kEggBump)
+      << "the cap misses the bump";
+  const auto result = FillHoles(m, p);
+  ASSERT_TRUE(result.symmetry_detected);
+  ASSERT_FALSE(result.symmetry.empty());
+  EXPECT_GT(std::abs(result.symmetry[0].normal.x()), std::cos(M_PI / 180));
+  ASSERT_EQ(result.holes.size(), 1u);
+  const auto& r = result.holes[0];
+  ASSERT_TRUE(r.problem.empty()) << r.problem;
+  ASSERT_FALSE(r.candidates.empty()) << r.validation_note;
+  EXPECT_EQ(r.kind.rfind("symmetry", 0), 0u)
+      << "chose " << r.kind << ": "
+      << curvature_inpaint::DescribeValidation(r.candidates, r.validation_errors, r.choice,
+                                               r.fake_holes, r.validation_note);
+  // The twin's height is the bump's: the mirror image brings it back.
+  EXPECT_NEAR(test::FillHeight(m, scan_vertices, bump), test::kEggBump, 0.1 * test::kEggBump);
+}
+
+TEST(Symmetry, AHoleWhoseTwinIsMissingTooKeepsTheContinuation) {
+  CMeshO m;
+  test::MakeSymmetricEgg(m);
+  test::PunchBump(m, test::EggBumps()[0]);
+  test::PunchBump(m, test::EggBumps()[1]); // the twin
+  HoleFillParams p = SmallImages();
+  const auto result = FillHoles(m, p);
+  ASSERT_EQ(result.holes.size(), 2u);
+  for (const auto& r : result.holes) {
+    ASSERT_TRUE(r.problem.empty() || r.problem.find("coarse fill validated") != std::string::npos)
+        << r.problem;
+    EXPECT_EQ(std::count(r.candidates.begin(), r.candidates.end(), "symmetry"), 0);
+    if (r.problem.empty()) EXPECT_EQ(r.kind, "continuation");
+  }
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 // curvature-inpaint: the command-line front end of the pipeline.
 #include "curvature_images.h"
 #include "hole_fill.h"
+#include "symmetry_prior.h"
 #include "inpaint/inpainter.h"
 #include "mesh_io.h"
 #include "pipeline.h"
@@ -28,7 +29,7 @@ const char* const kUsage =
     "                   [--transformation-constant T] [--max-hole-edges N] [--size PX]\n"
     "                   [--images DIR] [--report FILE.json] [--from-images DIR] [--context C]\n"
     "                   [--fake-holes K] [--fake-hole-size PX] [--detail A] [--density D]\n"
-    "                   [--oracle GT]\n"
+    "                   [--no-symmetry] [--oracle GT]\n"
     "      The main job: fill every hole of IN with detail (coarse fill, curvature images,\n"
     "      inpainting, deformation to the chosen variation) and write OUT. --pick auto (default)\n"
     "      takes the best-scored variation. Backends and their options as for inpaint.\n"
@@ -38,6 +39,9 @@ const char* const kUsage =
     "      1, 2) that came closest on K holes of its size cut into known surface near it;\n"
     "      --detail A instead uses amplitude A on every hole (0: the smooth continuation).\n"
     "      --fake-hole-size PX: the fake holes' images (default 256).\n"
+    "      Where the object is mirror-symmetric and a hole's mirror image is known surface,\n"
+    "      its mirrored curvature and surface are two more variations (validated like the\n"
+    "      rest, never picked unvalidated); --no-symmetry leaves them out.\n"
     "      --density D: the fill's vertex density (Liepa's alpha; default 2, coarse 1.41).\n"
     "      --oracle GT (benchmarks): deform to the curvature image painted from GT, the mesh\n"
     "      before its holes were cut: the best any inpainter can do with this deformation.\n"
@@ -69,8 +73,9 @@ const char* const kUsage =
     "      (OPENAI_API_KEY, OPENAI_BASE_URL; --model dall-e-2 or gpt-image-1), sd-webui\n"
     "      (--url, SD_WEBUI_AUTH=user:pass), stability (STABILITY_API_KEY), comfyui (--url,\n"
     "      --workflow to use an edited copy of the shipped workflow).\n"
-    "  curvature-inpaint info IN\n"
-    "      Print the vertex, face and hole counts of IN (boundary edges of each hole).\n"
+    "  curvature-inpaint info IN [--symmetry]\n"
+    "      Print the vertex, face and hole counts of IN (boundary edges of each hole);\n"
+    "      --symmetry also the mirror planes the symmetry prior finds in it.\n"
     "  curvature-inpaint punch IN OUT --seed-vertex V --radius-frac R\n"
     "      Remove every face with a vertex within R x (bounding-box diagonal) of vertex V:\n"
     "      the hole cases of the benchmark.\n";
@@ -247,6 +252,7 @@ int Fill(Args& args) {
   p.validation.fake_holes =
       int(args.Integer("--fake-holes", detail_given ? 0 : p.validation.fake_holes, 0));
   p.validation.image_size = int(args.Integer("--fake-hole-size", p.validation.image_size, 16));
+  p.symmetry.enabled = !args.Flag("--no-symmetry");
   const std::string pick = args.Option("--pick", "auto");
   if (pick != "auto") {
     char* end = nullptr;
@@ -295,6 +301,7 @@ int Fill(Args& args) {
 }
 
 int Info(Args& args) {
+  const bool symmetry = args.Flag("--symmetry");
   const auto files = args.Positional(1);
   CMeshO m;
   curvature_inpaint::LoadMesh(files[0], m);
@@ -304,6 +311,12 @@ int Info(Args& args) {
   std::printf("hole_edges");
   for (int e : c.loop_edges) std::printf(" %d", e);
   std::printf("\n");
+  if (symmetry) {
+    vcg_ext::CoarseFillResult scan; // nothing filled: every vertex is the scan's
+    scan.box = vcg_ext::ComputeUnitBox(m);
+    const auto prior = curvature_inpaint::DetectSymmetry(m, scan, vcg_ext::SymmetryParams());
+    std::printf("%s\n", curvature_inpaint::DescribeSymmetry(prior->planes, prior->best).c_str());
+  }
   return 0;
 }
 

@@ -139,6 +139,14 @@ HoleFillDialog::HoleFillDialog(const CMeshO& mesh, QWidget* parent)
   detail_->setToolTip("Embedded backend, with no fake holes: the amplitude of the synthesised "
                       "detail, relative to the surroundings' own (0: the smooth continuation).");
   form->addRow("&Detail", detail_);
+  symmetry_ = new QCheckBox("Offer each hole's mirror image");
+  symmetry_->setObjectName("symmetry");
+  symmetry_->setChecked(defaults.symmetry.enabled);
+  symmetry_->setToolTip("Find the object's mirror planes: a hole whose mirror image is known "
+                        "surface gets its mirrored curvature (\"symmetry\") and its mirrored "
+                        "surface (\"symmetry surface\") as variations, chosen automatically "
+                        "where the fake holes validate them.");
+  form->addRow("S&ymmetry", symmetry_);
   similitude_ = new QDoubleSpinBox;
   similitude_->setObjectName("similitude");
   similitude_->setRange(1, 255);
@@ -234,6 +242,7 @@ HoleFillParams HoleFillDialog::Params() const {
   p.inpaint.variations = variations_->value();
   p.validation.fake_holes = fake_holes_->value();
   p.inpaint.detail = detail_->value();
+  p.symmetry.enabled = symmetry_->isChecked();
   p.paper.similitude = similitude_->value();
   bool ok = false;
   const double tc = transformation_constant_->text().toDouble(&ok);
@@ -304,6 +313,7 @@ void HoleFillDialog::LoadSettings() {
   variations_->setValue(s.value("variations", 4).toInt());
   fake_holes_->setValue(s.value("fake_holes", HoleFillParams().validation.fake_holes).toInt());
   detail_->setValue(s.value("detail", HoleFillParams().inpaint.detail).toDouble());
+  symmetry_->setChecked(s.value("symmetry", HoleFillParams().symmetry.enabled).toBool());
   similitude_->setValue(s.value("similitude", 30.0).toDouble());
   transformation_constant_->setText(s.value("transformation_constant", "5e-05").toString());
   const int m = mode_->findText(s.value("mode", "direct").toString());
@@ -325,6 +335,7 @@ void HoleFillDialog::SaveSettings() const {
   s.setValue("variations", variations_->value());
   s.setValue("fake_holes", fake_holes_->value());
   s.setValue("detail", detail_->value());
+  s.setValue("symmetry", symmetry_->isChecked());
   s.setValue("similitude", similitude_->value());
   s.setValue("transformation_constant", transformation_constant_->text());
   s.setValue("mode", mode_->currentText());
@@ -474,22 +485,24 @@ void HoleFillDialog::ShowHoles() {
     list->setWrapping(false);
     list->setMovement(QListView::Static);
     list->setMinimumHeight(kThumbnail + 48);
-    // The automatic pick: the best score, or none (Skip) where the coarse fill validated best.
+    // The automatic pick: the validated choice or the best-scored continuation, or none (Skip)
+    // where the coarse fill validated best.
     const bool coarse_chosen = CoarseValidatedBest(hv);
-    const int best =
-        coarse_chosen
-            ? -1
-            : int(std::max_element(hv.scores.begin(), hv.scores.end()) - hv.scores.begin());
+    const int best = AutomaticPick(hv) - 1;
     for (size_t j = 0; j < hv.variations.size(); ++j) {
       // The same picture when selected: the selection shows as the frame and the bold label,
       // not as a tint that would make the variation look different.
       QIcon icon;
       icon.addPixmap(Thumbnail(hv.variations[j]), QIcon::Normal);
       icon.addPixmap(Thumbnail(hv.variations[j]), QIcon::Selected);
+      // A prior's variation says which ("symmetry"); the continuations show their score.
+      const bool prior = j < hv.kinds.size() && hv.kinds[j] != "continuation";
       auto* item = new QListWidgetItem(icon, QString("%1: %2%3")
                                                  .arg(j + 1)
-                                                 .arg(hv.scores[j], 0, 'f', 5)
+                                                 .arg(prior ? QString::fromStdString(hv.kinds[j])
+                                                            : QString::number(hv.scores[j], 'f', 5))
                                                  .arg(int(j) == best ? " (auto)" : ""));
+      item->setData(Qt::UserRole, prior ? QString::fromStdString(hv.kinds[j]) : "continuation");
       if (int(j) == best) {
         QFont f = item->font();
         f.setBold(true);

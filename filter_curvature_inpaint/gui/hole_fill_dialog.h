@@ -84,6 +84,7 @@ private:
   QSpinBox* variations_;
   QSpinBox* fake_holes_;
   QDoubleSpinBox* detail_;
+  QCheckBox* symmetry_;
   QDoubleSpinBox* similitude_;
   QLineEdit* transformation_constant_;
   QComboBox* mode_;

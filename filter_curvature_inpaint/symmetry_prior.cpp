@@ -1,0 +1,114 @@
+#include "symmetry_prior.h"
+
+#include <QString>
+
+#include <algorithm>
+#include <chrono>
+#include <sstream>
+
+namespace curvature_inpaint {
+
+std::unique_ptr<SymmetryPrior> DetectSymmetry(const CMeshO& m,
+                                              const vcg_ext::CoarseFillResult& coarse,
+                                              const vcg_ext::SymmetryParams& params) {
+  const auto start = std::chrono::steady_clock::now();
+  auto prior = std::make_unique<SymmetryPrior>();
+  prior->box = coarse.box;
+  // The coarse fill appends: the scan's vertices and faces come before every new one.
+  size_t scan_vertices = m.vert.size(), scan_faces = m.face.size();
+  for (const auto& h : coarse.holes) {
+    for (int v : h.new_vertices) scan_vertices = std::min(scan_vertices, size_t(v));
+    for (int f : h.new_faces) scan_faces = std::min(scan_faces, size_t(f));
+  }
+  std::vector<Eigen::Vector3d> normal(scan_vertices, Eigen::Vector3d::Zero());
+  for (size_t f = 0; f < scan_faces; ++f) {
+    const auto& face = m.face[f];
+    if (face.IsD()) continue;
+    const Eigen::Vector3d a = coarse.box.ToUnit(face.cP(0)), b = coarse.box.ToUnit(face.cP(1)),
+                          c = coarse.box.ToUnit(face.cP(2));
+    const Eigen::Vector3d n = (b - a).cross(c - a); // area-weighted
+    for (int k = 0; k < 3; ++k) {
+      const size_t v = size_t(vcg::tri::Index(m, face.cV(k)));
+      if (v < scan_vertices) normal[v] += n;
+    }
+  }
+  for (size_t v = 0; v < scan_vertices; ++v) {
+    if (m.vert[v].IsD() || !(normal[v].norm() > 0)) continue;
+    prior->points.push_back(coarse.box.ToUnit(m.vert[v].cP()));
+    prior->normals.push_back(normal[v].normalized());
+  }
+  if (!prior->points.empty()) {
+    prior->index = std::make_unique<vcg_ext::PointIndex>(prior->points);
+    prior->planes =
+        vcg_ext::DetectReflectiveSymmetry(prior->points, prior->normals, params, &prior->best);
+  }
+  prior->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return prior;
+}
+
+std::string DescribeSymmetry(const std::vector<vcg_ext::SymmetryPlane>& planes,
+                             const vcg_ext::SymmetryPlane& best) {
+  auto plane = [](const vcg_ext::SymmetryPlane& p) {
+    std::ostringstream o;
+    o << "plane (" << QString::number(p.normal.x(), 'f', 3).toStdString() << ", "
+      << QString::number(p.normal.y(), 'f', 3).toStdString() << ", "
+      << QString::number(p.normal.z(), 'f', 3).toStdString()
+      << ") . x = " << QString::number(p.offset, 'f', 4).toStdString() << " mirrors "
+      << int(std::lround(100 * p.coverage)) << " % of the scan onto itself (RMS "
+      << QString::number(100 * p.residual, 'f', 2).toStdString() << " % of the box)";
+    return o.str();
+  };
+  std::ostringstream o;
+  o << "symmetry: ";
+  if (planes.empty()) o << "none; the best " << plane(best);
+  for (size_t k = 0; k < planes.size(); ++k) o << (k ? "; " : "") << plane(planes[k]);
+  return o.str();
+}
+
+vcg_ext::MirroredFill MirrorHole(const SymmetryPrior& prior, const vcg_ext::PatchMesh& patch,
+                                 const std::vector<char>& free, const vcg_ext::UnitBox& frame,
+                                 const vcg_ext::MirroredFillParams& params,
+                                 const Eigen::Vector3d& excluded_centre, double excluded_radius) {
+  vcg_ext::MirroredFill best;
+  best.problem = "the object has no symmetry plane";
+  if (!prior.index || prior.planes.empty()) return best;
+  // The patch in the prior's unit box (both boxes are similarities of the mesh's units).
+  auto to_prior = [&](const Eigen::Vector3d& u) {
+    return Eigen::Vector3d(((u / frame.scale + frame.origin) - prior.box.origin) * prior.box.scale);
+  };
+  auto to_frame = [&](const Eigen::Vector3d& u) {
+    return Eigen::Vector3d(((u / prior.box.scale + prior.box.origin) - frame.origin) * frame.scale);
+  };
+  std::vector<Eigen::Vector3d> points(patch.points.size());
+  for (size_t i = 0; i < points.size(); ++i) points[i] = to_prior(patch.points[i]);
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  int fill = 0;
+  for (size_t i = 0; i < points.size(); ++i)
+    if (free[i]) centre += points[i], ++fill;
+  if (fill == 0) {
+    best.problem = "the hole has no fill";
+    return best;
+  }
+  centre /= fill;
+  double radius = 0;
+  for (size_t i = 0; i < points.size(); ++i)
+    if (free[i]) radius = std::max(radius, (points[i] - centre).norm());
+  vcg_ext::KnownSurface known;
+  known.index = prior.index.get();
+  known.normals = &prior.normals;
+  known.excluded_centre = (excluded_centre - prior.box.origin) * prior.box.scale;
+  known.excluded_radius = excluded_radius * prior.box.scale;
+  // The planes best covering the object first: a hole's ring alone (often plain surface that
+  // many planes map onto plain surface) cannot tell the object's symmetry from a chance one.
+  for (size_t k = 0; k < prior.planes.size(); ++k) {
+    vcg_ext::MirroredFill f =
+        vcg_ext::MirrorFill(points, patch.triangles, free, prior.planes[k], known, radius, params);
+    if (k == 0 || !f.problem.empty()) best.problem = f.problem;
+    if (!f.problem.empty()) continue;
+    for (auto& p : f.points) p = to_frame(p);
+    return f;
+  }
+  return best;
+}
+
+} // namespace curvature_inpaint
