@@ -214,6 +214,10 @@ void FilterCurvatureInpaintPlugin::initParameterSet(QAction* action, MeshModel&,
                           "Find the mirror planes of the object; a hole whose mirror image is "
                           "known surface gets its mirrored curvature and its mirrored surface as "
                           "two more variations, used where the fake holes validate them."));
+    par.addParam(RichBool("Exemplar", d.exemplar, "Offer exemplar variations",
+                          "Embedded backend: as many more variations copied from patches of "
+                          "the known curvature, ridges and valleys first, used where the fake "
+                          "holes validate them."));
     AddPaperModeParams(par);
     par.addParam(
         RichEnum("Mode", 0,
@@ -362,6 +366,7 @@ bool FilterCurvatureInpaintPlugin::applyHoleFill(MeshModel& mm, const RichParame
   p.validation.fake_holes = par.getInt("FakeHoles");
   p.inpaint.detail = par.getFloat("Detail");
   p.symmetry.enabled = par.getBool("Symmetry");
+  p.exemplar = par.getBool("Exemplar");
   ReadDeformationParams(par, p);
   p.images.coarse.max_hole_edges = par.getInt("MaxHoleSize");
   p.images.coarse.keep_longest_open = par.getBool("KeepLongestOpen");

@@ -106,6 +106,15 @@ const std::string& KindOf(const HoleVariations& hv, size_t j) {
   return j < hv.kinds.size() ? hv.kinds[j] : continuation;
 }
 
+/// The exemplar inpainter's variations, as many as the continuations, after them.
+void AddExemplars(HoleVariations& hv, const InpaintParams& params) {
+  for (QImage& v : InpaintExemplarVariations(hv.image, hv.mask, params, params.variations)) {
+    hv.variations.push_back(std::move(v));
+    hv.kinds.push_back("exemplar");
+    hv.surfaces.emplace_back();
+  }
+}
+
 /// The backend's completions as a hole's continuation variations.
 void SetContinuations(HoleVariations& hv, std::vector<QImage> images) {
   hv.kinds.assign(images.size(), "continuation");
@@ -268,6 +277,9 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
   for (double a : vp.details)
     hv.candidates.push_back("detail " + QString::number(a, 'g', 3).toStdString());
   const size_t first_prior = hv.candidates.size();
+  const bool exemplar = params.exemplar;
+  if (exemplar) hv.candidates.push_back("exemplar");
+  const size_t first_symmetry = hv.candidates.size();
   if (symmetric) {
     hv.candidates.push_back("symmetry");
     hv.candidates.push_back("symmetry surface");
@@ -335,10 +347,17 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
       if (c >= first_detail && c < first_prior) {
         PatchDeformation d = DeformPatch(f, completed.at(c - first_detail), direct);
         if (d.result.solved) t.fills.back() = std::move(d.points);
-      } else if (c == first_prior && mirror.problem.empty() && !mirror.points.empty()) {
+      } else if (exemplar && c == first_prior) {
+        const std::vector<QImage> copied =
+            InpaintExemplarVariations(ToQImage(f.image, false), MaskImage(f.image), one, 1);
+        if (!copied.empty()) {
+          PatchDeformation d = DeformPatch(f, copied[0], direct);
+          if (d.result.solved) t.fills.back() = std::move(d.points);
+        }
+      } else if (c == first_symmetry && mirror.problem.empty() && !mirror.points.empty()) {
         PatchDeformation d = DeformPatch(f, SymmetryImage(f, mirror, params), direct);
         if (d.result.solved) t.fills.back() = std::move(d.points);
-      } else if (c == first_prior + 1 && mirror.problem.empty() && !mirror.points.empty()) {
+      } else if (c == first_symmetry + 1 && mirror.problem.empty() && !mirror.points.empty()) {
         t.fills.back() = mirror.points;
       }
       error[c] += FakeHoleError(*t.fake, t.fills.back(), fill) / t.fake->radius;
@@ -427,6 +446,7 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& 
     at_scale.detail = hv.detail;
     if (at_scale.detail_scale <= 0) at_scale.detail_scale = hv.detail_scale;
     SetContinuations(hv, Inpaint(hv.image, hv.mask, at_scale));
+    if (params.exemplar && params.inpaint.backend == "embedded") AddExemplars(hv, at_scale);
     if (symmetric) {
       const QImage image = SymmetryImage(hi, mirror, params);
       hv.variations.push_back(image);
@@ -582,16 +602,21 @@ void InpaintAgain(HoleVariations& hole, const InpaintParams& params) {
   InpaintParams at_scale = params;
   at_scale.detail = hole.detail;
   if (at_scale.detail_scale <= 0) at_scale.detail_scale = hole.detail_scale;
-  // New continuations; the priors' variations (which no seed changes) stay after them.
+  // New continuations and exemplars; the symmetry variations (which no seed changes) stay
+  // after them.
   HoleVariations priors;
-  for (size_t j = 0; j < hole.variations.size(); ++j)
-    if (KindOf(hole, j) != "continuation") {
+  bool exemplars = false;
+  for (size_t j = 0; j < hole.variations.size(); ++j) {
+    exemplars = exemplars || KindOf(hole, j) == "exemplar";
+    if (KindOf(hole, j).rfind("symmetry", 0) == 0) {
       priors.variations.push_back(hole.variations[j]);
       priors.kinds.push_back(hole.kinds[j]);
       priors.surfaces.push_back(j < hole.surfaces.size() ? hole.surfaces[j]
                                                          : std::vector<Eigen::Vector3d>());
     }
+  }
   SetContinuations(hole, Inpaint(hole.image, hole.mask, at_scale));
+  if (exemplars) AddExemplars(hole, at_scale);
   hole.variations.insert(hole.variations.end(), priors.variations.begin(), priors.variations.end());
   hole.kinds.insert(hole.kinds.end(), priors.kinds.begin(), priors.kinds.end());
   hole.surfaces.insert(hole.surfaces.end(), priors.surfaces.begin(), priors.surfaces.end());

@@ -39,6 +39,9 @@ struct HoleFillParams {
   /// two more variations, its mirrored curvature ("symmetry") and the mirrored surface itself
   /// ("symmetry surface"), which the fake-hole validation weighs against the rest.
   SymmetryPriorParams symmetry;
+  /// Embedded backend: as many more variations from the exemplar inpainter ("exemplar",
+  /// patches of the known region copied in, ridges and valleys first), validated like the rest.
+  bool exemplar = true;
   std::string images_dir; ///< where to write every hole's images; empty: nowhere
   /// Instead of a backend: the folder where the Curvature Images stage wrote hole_<k>.json and
   /// a person (in any image editor) left hole_<k>_inpainted.png. The patches are rebuilt with
@@ -84,7 +87,8 @@ struct HoleVariations {
   QImage image, mask; ///< the coarse curvature image and its hole (white)
   /// The backend's completions of `image` ("continuation"), then the priors' variations.
   std::vector<QImage> variations;
-  std::vector<std::string> kinds; ///< per variation: "continuation", "symmetry", ...
+  /// Per variation: "continuation", "exemplar", "symmetry" or "symmetry surface".
+  std::vector<std::string> kinds;
   /// Per variation: empty where the patch is deformed to the image's curvature, else the
   /// patch (unit box) the hole takes as it is ("symmetry surface").
   std::vector<std::vector<Eigen::Vector3d>> surfaces;

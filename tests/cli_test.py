@@ -332,10 +332,12 @@ class DetailAndValidation(TempDirTest):
         for k, h in enumerate(holes, 1):
             v = h["validation"]
             names = [c["name"] for c in v["candidates"]]
-            self.assertEqual(names[:5], ["coarse", "detail 0", "detail 0.5", "detail 1", "detail 2"])
+            self.assertEqual(names[:6], ["coarse", "detail 0", "detail 0.5", "detail 1", "detail 2",
+                                         "exemplar"])
             # Where the hole's mirror image is known surface, the symmetry prior's two more.
-            self.assertIn(names[5:], [[], ["symmetry", "symmetry surface"]])
-            self.assertEqual(names[5:], [k for k in h["kinds"] if k != "continuation"])
+            self.assertIn(names[6:], [[], ["symmetry", "symmetry surface"]])
+            # Four exemplars, or none where the hole's image has no known patch to copy.
+            self.assertIn(h["kinds"][4:], [["exemplar"] * 4 + names[6:], names[6:]])
             self.assertGreaterEqual(v["fake_holes"], 1)
             errors = {c["name"]: c["error"] for c in v["candidates"]}
             best = min(errors.values())
@@ -352,7 +354,9 @@ class DetailAndValidation(TempDirTest):
         _, holes, log = self.fill("--fake-holes", "0")
         for h in holes:
             self.assertNotIn("validation", h)
-            self.assertEqual(h["pick"], 1 + max(range(len(h["scores"])), key=lambda i: h["scores"][i]))
+            # The best-scored continuation: no prior's variation is picked unvalidated.
+            continuations = [i for i, kind in enumerate(h["kinds"]) if kind == "continuation"]
+            self.assertEqual(h["pick"], 1 + max(continuations, key=lambda i: h["scores"][i]))
         self.assertNotIn("validation 1:", log)
 
 

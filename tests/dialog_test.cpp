@@ -160,7 +160,7 @@ private slots:
                        1;
       if (choice == "coarse")
         QCOMPARE(hole.pick, 0);
-      else if (choice.rfind("symmetry", 0) == 0)
+      else if (choice == "exemplar" || choice.rfind("symmetry", 0) == 0)
         QCOMPARE(hole.kinds[size_t(hole.pick - 1)], choice);
       else
         QCOMPARE(hole.pick, best);
@@ -217,17 +217,18 @@ private slots:
     const auto& hole = d.Holes()[0];
     QVERIFY2(hole.problem.empty(), hole.problem.c_str());
     QVERIFY2(hole.symmetry_note.empty(), hole.symmetry_note.c_str());
-    QCOMPARE(hole.kinds, (std::vector<std::string>{"continuation", "continuation", "symmetry",
-                                                   "symmetry surface"}));
+    QCOMPARE(hole.kinds, (std::vector<std::string>{"continuation", "continuation", "exemplar",
+                                                   "exemplar", "symmetry", "symmetry surface"}));
     QCOMPARE(hole.kinds[size_t(hole.pick - 1)], std::string("continuation"));
     // Each item says its kind; clicking the mirrored surface chooses it.
     auto* list = Find<QListWidget>(d, "variations_1");
-    QCOMPARE(list->count(), 4);
-    QVERIFY(list->item(2)->text().contains("symmetry"));
-    QCOMPARE(list->item(3)->data(Qt::UserRole).toString(), QString("symmetry surface"));
+    QCOMPARE(list->count(), 6);
+    QVERIFY(list->item(2)->text().contains("exemplar"));
+    QVERIFY(list->item(4)->text().contains("symmetry"));
+    QCOMPARE(list->item(5)->data(Qt::UserRole).toString(), QString("symmetry surface"));
     QTest::mouseClick(list->viewport(), Qt::LeftButton, {},
-                      list->visualItemRect(list->item(3)).center());
-    QCOMPARE(d.Holes()[0].pick, 4);
+                      list->visualItemRect(list->item(5)).center());
+    QCOMPARE(d.Holes()[0].pick, 6);
     // Apply's input: the hole takes the mirrored surface, bump and all.
     CMeshO applied;
     curvature_inpaint::CopyMesh(egg, applied);
@@ -237,6 +238,7 @@ private slots:
             0.1 * test::kEggBump);
     // Unchecked, the preview offers the continuations alone.
     Find<QCheckBox>(d, "symmetry")->setChecked(false);
+    Find<QCheckBox>(d, "exemplar")->setChecked(false);
     d.Inpaint();
     QTRY_VERIFY_WITH_TIMEOUT(!d.Busy(), 120000);
     QCOMPARE(d.Holes()[0].kinds, (std::vector<std::string>{"continuation", "continuation"}));

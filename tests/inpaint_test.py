@@ -280,7 +280,7 @@ class FillPipeline(TempDirTest):
             best = 1 + max(range(4), key=lambda i: h["scores"][i])
             if choice == "coarse":
                 self.assertEqual(h["pick"], 0)
-            elif choice.startswith("symmetry"):
+            elif choice == "exemplar" or choice.startswith("symmetry"):
                 self.assertEqual(h["kinds"][h["pick"] - 1], choice)
             else:
                 self.assertEqual(h["pick"], best)

@@ -147,6 +147,13 @@ HoleFillDialog::HoleFillDialog(const CMeshO& mesh, QWidget* parent)
                         "surface (\"symmetry surface\") as variations, chosen automatically "
                         "where the fake holes validate them.");
   form->addRow("S&ymmetry", symmetry_);
+  exemplar_ = new QCheckBox("Offer exemplar variations");
+  exemplar_->setObjectName("exemplar");
+  exemplar_->setChecked(defaults.exemplar);
+  exemplar_->setToolTip("Embedded backend: as many more variations copied from patches of the "
+                        "known curvature, ridges and valleys first (\"exemplar\"), chosen "
+                        "automatically where the fake holes validate them.");
+  form->addRow("E&xemplar", exemplar_);
   similitude_ = new QDoubleSpinBox;
   similitude_->setObjectName("similitude");
   similitude_->setRange(1, 255);
@@ -243,6 +250,7 @@ HoleFillParams HoleFillDialog::Params() const {
   p.validation.fake_holes = fake_holes_->value();
   p.inpaint.detail = detail_->value();
   p.symmetry.enabled = symmetry_->isChecked();
+  p.exemplar = exemplar_->isChecked();
   p.paper.similitude = similitude_->value();
   bool ok = false;
   const double tc = transformation_constant_->text().toDouble(&ok);
@@ -314,6 +322,7 @@ void HoleFillDialog::LoadSettings() {
   fake_holes_->setValue(s.value("fake_holes", HoleFillParams().validation.fake_holes).toInt());
   detail_->setValue(s.value("detail", HoleFillParams().inpaint.detail).toDouble());
   symmetry_->setChecked(s.value("symmetry", HoleFillParams().symmetry.enabled).toBool());
+  exemplar_->setChecked(s.value("exemplar", HoleFillParams().exemplar).toBool());
   similitude_->setValue(s.value("similitude", 30.0).toDouble());
   transformation_constant_->setText(s.value("transformation_constant", "5e-05").toString());
   const int m = mode_->findText(s.value("mode", "direct").toString());
@@ -336,6 +345,7 @@ void HoleFillDialog::SaveSettings() const {
   s.setValue("fake_holes", fake_holes_->value());
   s.setValue("detail", detail_->value());
   s.setValue("symmetry", symmetry_->isChecked());
+  s.setValue("exemplar", exemplar_->isChecked());
   s.setValue("similitude", similitude_->value());
   s.setValue("transformation_constant", transformation_constant_->text());
   s.setValue("mode", mode_->currentText());

@@ -85,6 +85,7 @@ private:
   QSpinBox* fake_holes_;
   QDoubleSpinBox* detail_;
   QCheckBox* symmetry_;
+  QCheckBox* exemplar_;
   QDoubleSpinBox* similitude_;
   QLineEdit* transformation_constant_;
   QComboBox* mode_;

@@ -13,6 +13,8 @@
 //    detail amplitude. Each seed gives another variation.
 #include "inpainter.h"
 
+#include <vcg_ext/exemplar_inpainting.h>
+
 #include <vcg_ext/curvature_colormap.h>
 
 #include <Eigen/Sparse>
@@ -348,6 +350,46 @@ std::vector<QImage> InpaintEmbeddedAmplitudes(const QImage& image, const QImage&
                                               const std::vector<double>& amplitudes) {
   if (amplitudes.empty()) return {};
   return Complete(image, mask, p, 1, amplitudes);
+}
+
+std::vector<QImage> InpaintExemplarVariations(const QImage& image, const QImage& mask,
+                                              const InpaintParams& p, int count) {
+  const Field f = ReadField(image.convertToFormat(QImage::Format_RGB32), mask);
+  // Patches of a few vertex spacings on a grid of at most 256 pixels: finer patches would
+  // copy what the fill's vertices cannot carry, and cost more than the whole continuation.
+  const int longest = std::max(f.w, f.h);
+  const double spacing = p.detail_scale > 0 ? p.detail_scale : longest / 64.0;
+  // At least 64 pixels, where a small hole's patches still fit beside it.
+  const int factor =
+      std::max({1, (longest + 255) / 256, std::min(int(spacing / 2), longest / 64)});
+  // The border's seam, as for the continuation, is filled too.
+  const Field band = WithoutBorderBand(f, std::max(1, longest / 128));
+  const Field work = factor > 1 ? Downsample(band, factor) : band;
+  std::vector<QImage> out;
+  for (int k = 0; k < count; ++k) {
+    vcg_ext::MaskedImage im;
+    im.w = work.w;
+    im.h = work.h;
+    im.value = work.v;
+    im.known = work.known;
+    vcg_ext::ExemplarParams ep;
+    ep.seed = p.seed + 7919u * uint32_t(k);
+    if (!vcg_ext::InpaintExemplar(im, ep)) break; // no known patch: no exemplar to copy
+    Field done = work;
+    done.v = im.value;
+    QImage result(f.w, f.h, QImage::Format_RGB32);
+    for (int y = 0; y < f.h; ++y)
+      for (int x = 0; x < f.w; ++x) {
+        const double t = f.is_known(x, y) ? f.at(x, y)
+                         : factor > 1
+                             ? Bilinear(done, (x + 0.5) / factor - 0.5, (y + 0.5) / factor - 0.5)
+                             : done.at(x, y);
+        const vcg_ext::Rgb8 c = vcg_ext::CurvatureColormap::Color8(t);
+        result.setPixel(x, y, qRgb(c.r, c.g, c.b));
+      }
+    out.push_back(result);
+  }
+  return out;
 }
 
 } // namespace curvature_inpaint

@@ -77,4 +77,11 @@ std::vector<QImage> InpaintEmbeddedAmplitudes(const QImage& image, const QImage&
                                               const InpaintParams& params,
                                               const std::vector<double>& amplitudes);
 
+/// `count` completions by the exemplar inpainter (vcg_ext/exemplar_inpainting.h: patches of
+/// the known region copied in from the border inwards, structures first), one per seed from
+/// params.seed, on a grid of a few pixels per params.detail_scale. Fewer (none) where the
+/// image has no fully known patch.
+std::vector<QImage> InpaintExemplarVariations(const QImage& image, const QImage& mask,
+                                              const InpaintParams& params, int count);
+
 } // namespace curvature_inpaint
