@@ -218,6 +218,10 @@ void FilterCurvatureInpaintPlugin::initParameterSet(QAction* action, MeshModel&,
                           "Embedded backend: as many more variations copied from patches of "
                           "the known curvature, ridges and valleys first, used where the fake "
                           "holes validate them."));
+    par.addParam(RichBool("Creases", d.creases, "Carry creases across holes",
+                          "A hole that sharp edges run into gets one more variation: the smooth "
+                          "faces around it extended until they meet, so edges and corners come "
+                          "back sharp; used where the fake holes validate it."));
     AddPaperModeParams(par);
     par.addParam(
         RichEnum("Mode", 0,
@@ -367,6 +371,7 @@ bool FilterCurvatureInpaintPlugin::applyHoleFill(MeshModel& mm, const RichParame
   p.inpaint.detail = par.getFloat("Detail");
   p.symmetry.enabled = par.getBool("Symmetry");
   p.exemplar = par.getBool("Exemplar");
+  p.creases = par.getBool("Creases");
   ReadDeformationParams(par, p);
   p.images.coarse.max_hole_edges = par.getInt("MaxHoleSize");
   p.images.coarse.keep_longest_open = par.getBool("KeepLongestOpen");

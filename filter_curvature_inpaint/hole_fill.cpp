@@ -249,11 +249,24 @@ MirroredPatch(const SymmetryPrior& prior, const HoleImage& hi, const vcg_ext::Un
   return f;
 }
 
-/// The mirrored fill's curvature as a variation of the hole's image.
-QImage SymmetryImage(const HoleImage& hi, const vcg_ext::MirroredFill& mirror,
-                     const HoleFillParams& params) {
-  return KnownPixelsKept(FinalCurvatureImage(hi, mirror.points, params.images.apss),
+/// A prior's surface (the patch with its fill moved) as a variation of the hole's image: its
+/// curvature.
+QImage SurfaceImage(const HoleImage& hi, const std::vector<Eigen::Vector3d>& points,
+                    const HoleFillParams& params) {
+  return KnownPixelsKept(FinalCurvatureImage(hi, points, params.images.apss),
                          ToQImage(hi.image, false), MaskImage(hi.image));
+}
+
+/// The patch's fill carried across the creases of its context (FillAcrossCreases), backed
+/// off where it would fold or cross the patch; empty points with a `problem` where it has none.
+vcg_ext::CreaseFill CreasedPatch(const HoleImage& hi, const HoleFillParams& params) {
+  vcg_ext::CreaseFill f = vcg_ext::FillAcrossCreases(
+      hi.patch.points, hi.patch.triangles, hi.patch.is_fill, hi.is_new, params.crease_fill);
+  if (f.problem.empty() && BackOff(hi.patch, f.points) < 0) {
+    f.points.clear();
+    f.problem = "its creases would fold the patch or make it cross itself";
+  }
+  return f;
 }
 
 /// The fill triangles of a patch.
@@ -270,7 +283,7 @@ std::vector<std::array<int, 3>> FillTriangles(const vcg_ext::PatchMesh& patch) {
 /// surface that was cut out; `hv` gets the candidates, their errors and the choice (-1 when
 /// there was no room for fake holes: the variation score then chooses alone).
 void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const InpaintParams& inpaint,
-                  const ValidationContext& ctx, bool symmetric, HoleVariations& hv) {
+                  const ValidationContext& ctx, bool symmetric, bool creased, HoleVariations& hv) {
   const ValidationParams& vp = params.validation;
   if (vp.coarse) hv.candidates.push_back("coarse");
   const size_t first_detail = hv.candidates.size();
@@ -284,6 +297,8 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
     hv.candidates.push_back("symmetry");
     hv.candidates.push_back("symmetry surface");
   }
+  const size_t crease_candidate = hv.candidates.size();
+  if (creased) hv.candidates.push_back("creases");
   FakeHoleParams fp;
   fp.count = vp.fake_holes;
   fp.seed = params.inpaint.seed;
@@ -342,6 +357,8 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
     if (symmetric)
       mirror = MirroredPatch(*ctx.symmetry, f, t.images.coarse.box, params, t.fake->centre,
                              1.25 * t.fake->radius / t.images.coarse.box.scale);
+    vcg_ext::CreaseFill crease;
+    if (creased) crease = CreasedPatch(f, params);
     for (size_t c = 0; c < n; ++c) {
       t.fills.push_back(f.patch.points);
       if (c >= first_detail && c < first_prior) {
@@ -355,10 +372,12 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
           if (d.result.solved) t.fills.back() = std::move(d.points);
         }
       } else if (c == first_symmetry && mirror.problem.empty() && !mirror.points.empty()) {
-        PatchDeformation d = DeformPatch(f, SymmetryImage(f, mirror, params), direct);
+        PatchDeformation d = DeformPatch(f, SurfaceImage(f, mirror.points, params), direct);
         if (d.result.solved) t.fills.back() = std::move(d.points);
       } else if (c == first_symmetry + 1 && mirror.problem.empty() && !mirror.points.empty()) {
         t.fills.back() = mirror.points;
+      } else if (creased && c == crease_candidate && crease.problem.empty()) {
+        t.fills.back() = crease.points;
       }
       error[c] += FakeHoleError(*t.fake, t.fills.back(), fill) / t.fake->radius;
     }
@@ -440,21 +459,32 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& 
       hv.symmetry_note = mirror.problem;
     }
     const bool symmetric = ctx.symmetry && mirror.problem.empty();
+    vcg_ext::CreaseFill crease;
+    if (params.creases) {
+      crease = CreasedPatch(hi, params);
+      hv.crease_note = crease.problem;
+    }
+    const bool creased = params.creases && crease.problem.empty();
     if (ctx.vf && ValidatesOnFakeHoles(params))
-      ValidateHole(hi, params, inpaint, ctx, symmetric, hv);
+      ValidateHole(hi, params, inpaint, ctx, symmetric, creased, hv);
     InpaintParams at_scale = inpaint;
     at_scale.detail = hv.detail;
     if (at_scale.detail_scale <= 0) at_scale.detail_scale = hv.detail_scale;
     SetContinuations(hv, Inpaint(hv.image, hv.mask, at_scale));
     if (params.exemplar && params.inpaint.backend == "embedded") AddExemplars(hv, at_scale);
     if (symmetric) {
-      const QImage image = SymmetryImage(hi, mirror, params);
+      const QImage image = SurfaceImage(hi, mirror.points, params);
       hv.variations.push_back(image);
       hv.kinds.push_back("symmetry");
       hv.surfaces.emplace_back();
       hv.variations.push_back(image);
       hv.kinds.push_back("symmetry surface");
       hv.surfaces.push_back(std::move(mirror.points));
+    }
+    if (creased) {
+      hv.variations.push_back(SurfaceImage(hi, crease.points, params));
+      hv.kinds.push_back("creases");
+      hv.surfaces.push_back(std::move(crease.points));
     }
   } else {
     const std::string base = params.inpainted_dir + "/hole_" + std::to_string(k + 1);
@@ -602,13 +632,13 @@ void InpaintAgain(HoleVariations& hole, const InpaintParams& params) {
   InpaintParams at_scale = params;
   at_scale.detail = hole.detail;
   if (at_scale.detail_scale <= 0) at_scale.detail_scale = hole.detail_scale;
-  // New continuations and exemplars; the symmetry variations (which no seed changes) stay
-  // after them.
+  // New continuations and exemplars; the surface priors' variations (symmetry, creases: no
+  // seed changes them) stay after them.
   HoleVariations priors;
   bool exemplars = false;
   for (size_t j = 0; j < hole.variations.size(); ++j) {
     exemplars = exemplars || KindOf(hole, j) == "exemplar";
-    if (KindOf(hole, j).rfind("symmetry", 0) == 0) {
+    if (KindOf(hole, j).rfind("symmetry", 0) == 0 || KindOf(hole, j) == "creases") {
       priors.variations.push_back(hole.variations[j]);
       priors.kinds.push_back(hole.kinds[j]);
       priors.surfaces.push_back(j < hole.surfaces.size() ? hole.surfaces[j]

@@ -8,6 +8,7 @@
 #include "inpaint/inpainter.h"
 #include "symmetry_prior.h"
 
+#include <vcg_ext/crease_fill.h>
 #include <vcg_ext/curvature_deformation.h>
 
 #include <string>
@@ -42,6 +43,10 @@ struct HoleFillParams {
   /// Embedded backend: as many more variations from the exemplar inpainter ("exemplar",
   /// patches of the known region copied in, ridges and valleys first), validated like the rest.
   bool exemplar = true;
+  /// Each hole that creases of its context run into gets one more variation: the context's
+  /// smooth faces extended across it until they meet ("creases", vcg_ext/crease_fill.h).
+  bool creases = true;
+  vcg_ext::CreaseFillParams crease_fill;
   std::string images_dir; ///< where to write every hole's images; empty: nowhere
   /// Instead of a backend: the folder where the Curvature Images stage wrote hole_<k>.json and
   /// a person (in any image editor) left hole_<k>_inpainted.png. The patches are rebuilt with
@@ -87,7 +92,7 @@ struct HoleVariations {
   QImage image, mask; ///< the coarse curvature image and its hole (white)
   /// The backend's completions of `image` ("continuation"), then the priors' variations.
   std::vector<QImage> variations;
-  /// Per variation: "continuation", "exemplar", "symmetry" or "symmetry surface".
+  /// Per variation: "continuation", "exemplar", "symmetry", "symmetry surface" or "creases".
   std::vector<std::string> kinds;
   /// Per variation: empty where the patch is deformed to the image's curvature, else the
   /// patch (unit box) the hole takes as it is ("symmetry surface").
@@ -105,6 +110,7 @@ struct HoleVariations {
   int fake_holes = 0;
   std::string validation_note;
   std::string symmetry_note; ///< why the hole has no symmetry variation; empty if it has
+  std::string crease_note;   ///< why the hole has no crease variation; empty if it has
   double images_s = 0, inpaint_s = 0;
 };
 

@@ -335,7 +335,8 @@ class DetailAndValidation(TempDirTest):
             self.assertEqual(names[:6], ["coarse", "detail 0", "detail 0.5", "detail 1", "detail 2",
                                          "exemplar"])
             # Where the hole's mirror image is known surface, the symmetry prior's two more.
-            self.assertIn(names[6:], [[], ["symmetry", "symmetry surface"]])
+            self.assertIn(names[6:], [[], ["symmetry", "symmetry surface"], ["creases"],
+                                      ["symmetry", "symmetry surface", "creases"]])
             # Four exemplars, or none where the hole's image has no known patch to copy.
             self.assertIn(h["kinds"][4:], [["exemplar"] * 4 + names[6:], names[6:]])
             self.assertGreaterEqual(v["fake_holes"], 1)

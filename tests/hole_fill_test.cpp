@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 
 namespace {
 
@@ -298,6 +299,103 @@ TEST(Symmetry, AHoleWhoseTwinIsMissingTooKeepsTheContinuation) {
     EXPECT_EQ(std::count(r.candidates.begin(), r.candidates.end(), "symmetry"), 0);
     if (r.problem.empty()) EXPECT_EQ(r.kind, "continuation");
   }
+}
+
+/// The cube [-1, 1]^3, each face an n x n grid of squares split into two triangles, outward.
+void MakeCube(CMeshO& m, int n) {
+  std::map<std::array<int, 3>, int> index; // grid coordinates (0..2n) -> vertex
+  std::vector<Point3m> points;
+  std::vector<std::array<int, 3>> faces;
+  auto vertex = [&](const std::array<int, 3>& g) {
+    const auto it = index.find(g);
+    if (it != index.end()) return it->second;
+    points.emplace_back(Scalarm(g[0]) / n - 1, Scalarm(g[1]) / n - 1, Scalarm(g[2]) / n - 1);
+    return index[g] = int(points.size()) - 1;
+  };
+  for (int axis = 0; axis < 3; ++axis)
+    for (int side : {0, 2 * n}) {
+      const int u = (axis + 1) % 3, w = (axis + 2) % 3;
+      for (int i = 0; i < 2 * n; i += 2)
+        for (int j = 0; j < 2 * n; j += 2) {
+          std::array<int, 3> a{}, b{}, c{}, d{};
+          a[axis] = b[axis] = c[axis] = d[axis] = side;
+          a[u] = i, a[w] = j, b[u] = i + 2, b[w] = j, c[u] = i + 2, c[w] = j + 2;
+          d[u] = i, d[w] = j + 2;
+          const int va = vertex(a), vb = vertex(b), vc = vertex(c), vd = vertex(d);
+          if (side == 0)
+            faces.push_back({va, vc, vb}), faces.push_back({va, vd, vc});
+          else
+            faces.push_back({va, vb, vc}), faces.push_back({va, vc, vd});
+        }
+    }
+  m.Clear();
+  auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, points.size());
+  for (size_t i = 0; i < points.size(); ++i, ++vi) vi->P() = points[i];
+  auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, faces.size());
+  for (size_t f = 0; f < faces.size(); ++f, ++fi)
+    for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[size_t(faces[f][size_t(k)])];
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+  vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
+}
+
+/// Distance of p to the cube's surface.
+double CubeDistance(const Point3m& p) {
+  const Eigen::Vector3d q(std::abs(p[0]) - 1, std::abs(p[1]) - 1, std::abs(p[2]) - 1);
+  const double outside = q.cwiseMax(0.0).norm();
+  return outside > 0 ? outside : -q.maxCoeff();
+}
+
+TEST(Creases, AHoleOnACubesEdgeAndOneOnItsCornerComeBackSharp) {
+  CMeshO m;
+  MakeCube(m, 24);
+  vcg_ext::PunchHole(m, Point3m(0.2f, 1, 1), Scalarm(0.3)); // on an edge
+  vcg_ext::PunchHole(m, Point3m(-1, -1, 1), Scalarm(0.35)); // on a corner
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+  const size_t scan_vertices = m.vert.size();
+  HoleFillParams p = SmallImages();
+  p.symmetry.enabled = false; // the cube's mirror image would restore them too
+  CMeshO coarse;
+  curvature_inpaint::CopyMesh(m, coarse);
+  curvature_inpaint::CoarseFill(coarse, p.images.coarse);
+  double cap = 0;
+  for (size_t v = scan_vertices; v < coarse.vert.size(); ++v)
+    cap = std::max(cap, CubeDistance(coarse.vert[v].cP()));
+  EXPECT_GT(cap, 0.05) << "the smooth cap rounds the edge and the corner";
+  const auto result = FillHoles(m, p);
+  ASSERT_EQ(result.holes.size(), 2u);
+  for (const auto& r : result.holes) {
+    ASSERT_TRUE(r.problem.empty()) << r.problem;
+    EXPECT_EQ(r.kind, "creases") << curvature_inpaint::DescribeValidation(
+        r.candidates, r.validation_errors, r.choice, r.fake_holes, r.validation_note);
+  }
+  // Every fill vertex on the cube (the edge straight, the corner where the three faces meet)
+  // within 1 % of the edge's length; every fill triangle with its corners on one face lies in
+  // it (normal within 5 degrees: the faces meet at the cube's own 90), and only the row of
+  // triangles that straddles a crease leans.
+  for (size_t v = scan_vertices; v < m.vert.size(); ++v)
+    EXPECT_LT(CubeDistance(m.vert[v].cP()), 0.02) << v;
+  int straddling = 0, on_a_face = 0;
+  for (const auto& f : m.face) {
+    bool is_new = false;
+    for (int k = 0; k < 3; ++k)
+      is_new = is_new || size_t(vcg::tri::Index(m, f.cV(k))) >= scan_vertices;
+    if (!is_new) continue;
+    int face_axis = -1;
+    for (int axis = 0; axis < 3 && face_axis < 0; ++axis) {
+      bool all = true;
+      for (int k = 0; k < 3; ++k) all = all && std::abs(std::abs(f.cP(k)[axis]) - 1) < 2e-3;
+      if (all && f.cP(0)[axis] * f.cP(1)[axis] > 0 && f.cP(0)[axis] * f.cP(2)[axis] > 0)
+        face_axis = axis;
+    }
+    if (face_axis < 0) {
+      ++straddling;
+      continue;
+    }
+    ++on_a_face;
+    const Point3m n = vcg::TriangleNormal(f).Normalize();
+    EXPECT_GT(std::abs(n[face_axis]), std::cos(5 * M_PI / 180));
+  }
+  EXPECT_GT(on_a_face, 2 * straddling) << straddling << " of " << on_a_face + straddling;
 }
 
 } // namespace

@@ -29,7 +29,7 @@ const char* const kUsage =
     "                   [--transformation-constant T] [--max-hole-edges N] [--size PX]\n"
     "                   [--images DIR] [--report FILE.json] [--from-images DIR] [--context C]\n"
     "                   [--fake-holes K] [--fake-hole-size PX] [--detail A] [--density D]\n"
-    "                   [--no-symmetry] [--no-exemplar] [--oracle GT]\n"
+    "                   [--no-symmetry] [--no-exemplar] [--no-creases] [--oracle GT]\n"
     "      The main job: fill every hole of IN with detail (coarse fill, curvature images,\n"
     "      inpainting, deformation to the chosen variation) and write OUT. --pick auto (default)\n"
     "      takes the best-scored variation. Backends and their options as for inpaint.\n"
@@ -44,6 +44,8 @@ const char* const kUsage =
     "      rest, never picked unvalidated); --no-symmetry leaves them out. The embedded\n"
     "      backend also offers N exemplar variations (patches of the known curvature copied\n"
     "      in, ridges first; validated like the rest); --no-exemplar leaves them out.\n"
+    "      A hole that creases run into also gets its context's faces extended across it\n"
+    "      until they meet (sharp edges and corners; validated); --no-creases leaves it out.\n"
     "      --density D: the fill's vertex density (Liepa's alpha; default 2, coarse 1.41).\n"
     "      --oracle GT (benchmarks): deform to the curvature image painted from GT, the mesh\n"
     "      before its holes were cut: the best any inpainter can do with this deformation.\n"
@@ -256,6 +258,7 @@ int Fill(Args& args) {
   p.validation.image_size = int(args.Integer("--fake-hole-size", p.validation.image_size, 16));
   p.symmetry.enabled = !args.Flag("--no-symmetry");
   p.exemplar = !args.Flag("--no-exemplar");
+  p.creases = !args.Flag("--no-creases");
   const std::string pick = args.Option("--pick", "auto");
   if (pick != "auto") {
     char* end = nullptr;

@@ -154,6 +154,13 @@ HoleFillDialog::HoleFillDialog(const CMeshO& mesh, QWidget* parent)
                         "known curvature, ridges and valleys first (\"exemplar\"), chosen "
                         "automatically where the fake holes validate them.");
   form->addRow("E&xemplar", exemplar_);
+  creases_ = new QCheckBox("Carry creases across holes");
+  creases_->setObjectName("creases");
+  creases_->setChecked(defaults.creases);
+  creases_->setToolTip("A hole that sharp edges run into gets one more variation (\"creases\"): "
+                       "the smooth faces around it extended until they meet, chosen "
+                       "automatically where the fake holes validate it.");
+  form->addRow("&Creases", creases_);
   similitude_ = new QDoubleSpinBox;
   similitude_->setObjectName("similitude");
   similitude_->setRange(1, 255);
@@ -251,6 +258,7 @@ HoleFillParams HoleFillDialog::Params() const {
   p.inpaint.detail = detail_->value();
   p.symmetry.enabled = symmetry_->isChecked();
   p.exemplar = exemplar_->isChecked();
+  p.creases = creases_->isChecked();
   p.paper.similitude = similitude_->value();
   bool ok = false;
   const double tc = transformation_constant_->text().toDouble(&ok);
@@ -323,6 +331,7 @@ void HoleFillDialog::LoadSettings() {
   detail_->setValue(s.value("detail", HoleFillParams().inpaint.detail).toDouble());
   symmetry_->setChecked(s.value("symmetry", HoleFillParams().symmetry.enabled).toBool());
   exemplar_->setChecked(s.value("exemplar", HoleFillParams().exemplar).toBool());
+  creases_->setChecked(s.value("creases", HoleFillParams().creases).toBool());
   similitude_->setValue(s.value("similitude", 30.0).toDouble());
   transformation_constant_->setText(s.value("transformation_constant", "5e-05").toString());
   const int m = mode_->findText(s.value("mode", "direct").toString());
@@ -346,6 +355,7 @@ void HoleFillDialog::SaveSettings() const {
   s.setValue("detail", detail_->value());
   s.setValue("symmetry", symmetry_->isChecked());
   s.setValue("exemplar", exemplar_->isChecked());
+  s.setValue("creases", creases_->isChecked());
   s.setValue("similitude", similitude_->value());
   s.setValue("transformation_constant", transformation_constant_->text());
   s.setValue("mode", mode_->currentText());

@@ -86,6 +86,7 @@ private:
   QDoubleSpinBox* detail_;
   QCheckBox* symmetry_;
   QCheckBox* exemplar_;
+  QCheckBox* creases_;
   QDoubleSpinBox* similitude_;
   QLineEdit* transformation_constant_;
   QComboBox* mode_;

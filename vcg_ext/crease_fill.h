@@ -1,0 +1,224 @@
+// A hole's fill that carries the creases running into it across: the known context around
+// the hole is split at its sharp edges into smooth regions (a machined part's faces), each
+// region is fitted with a quadric height field, and every fill vertex is moved onto the
+// solid those surfaces bound (their intersection where the creases are convex, their union
+// where concave). Where two regions' surfaces meet, the crease comes back straight and sharp
+// as the extension of both; where three meet, a corner. A smooth cap (Liepa, CGAL, MeshLab)
+// rounds them away.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace vcg_ext {
+
+struct CreaseFillParams {
+  double crease_angle = 30; ///< degrees between face normals across an edge that is a crease
+  double smooth_angle = 15; ///< degrees under which neighbouring faces are one smooth region
+  int min_region_faces = 8; ///< smaller regions (slivers along a crease) are ignored
+  /// A region's fit may leave this RMS, in hole radii: what is not that smooth is no face of a
+  /// machined part, and its extension would not predict the hole.
+  double max_fit_residual = 0.02;
+};
+
+struct CreaseFill {
+  std::vector<Eigen::Vector3d> points; ///< the whole patch, fill vertices moved
+  int regions = 0;                     ///< smooth regions meeting at the hole
+  int crease_edges = 0;                ///< sharp edges of the context
+  bool convex = true;
+  std::string problem; ///< why there is no fill; empty if there is one
+};
+
+namespace detail {
+
+/// z = a x^2 + b xy + c y^2 + d x + e y + f over a frame (origin, u, v, n).
+struct HeightField {
+  Eigen::Vector3d origin, u, v, n;
+  Eigen::Matrix<double, 6, 1> c = Eigen::Matrix<double, 6, 1>::Zero();
+  double Height(const Eigen::Vector3d& p, double* z) const {
+    const Eigen::Vector3d d = p - origin;
+    const double x = d.dot(u), y = d.dot(v);
+    *z = d.dot(n);
+    return c[0] * x * x + c[1] * x * y + c[2] * y * y + c[3] * x + c[4] * y + c[5];
+  }
+  /// Signed distance along n from the surface (positive: on the side n points to).
+  double Offset(const Eigen::Vector3d& p) const {
+    double z = 0;
+    const double h = Height(p, &z);
+    return z - h;
+  }
+};
+
+} // namespace detail
+
+/// The crease-carrying fill of a hole's patch (`points`, `triangles`, `is_fill` per triangle,
+/// `free` per vertex: the fill's vertices), oriented consistently. A `problem` where the context
+/// has no crease, fewer than two smooth regions meet at the hole, a region is not smooth enough
+/// to extend, or the creases are convex and concave at once.
+inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
+                                    const std::vector<std::array<int, 3>>& triangles,
+                                    const std::vector<char>& is_fill, const std::vector<char>& free,
+                                    const CreaseFillParams& params) {
+  CreaseFill out;
+  const size_t nt = triangles.size();
+  std::vector<Eigen::Vector3d> normal(nt);
+  for (size_t t = 0; t < nt; ++t) {
+    const auto& f = triangles[t];
+    const Eigen::Vector3d n = (points[size_t(f[1])] - points[size_t(f[0])])
+                                  .cross(points[size_t(f[2])] - points[size_t(f[0])]);
+    normal[t] = n.norm() > 0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d::Zero();
+  }
+  // The hole's size, from its fill.
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  int fill_vertices = 0;
+  for (size_t i = 0; i < points.size(); ++i)
+    if (free[i]) centre += points[i], ++fill_vertices;
+  if (fill_vertices == 0) {
+    out.problem = "the hole has no fill";
+    return out;
+  }
+  centre /= fill_vertices;
+  double radius = 0;
+  for (size_t i = 0; i < points.size(); ++i)
+    if (free[i]) radius = std::max(radius, (points[i] - centre).norm());
+
+  // Edges between known faces: smooth joins, creases (with their sense).
+  std::map<std::pair<int, int>, std::vector<int>> by_edge;
+  for (size_t t = 0; t < nt; ++t)
+    if (!is_fill[t])
+      for (int k = 0; k < 3; ++k) {
+        const int a = triangles[t][size_t(k)], b = triangles[t][size_t((k + 1) % 3)];
+        by_edge[{std::min(a, b), std::max(a, b)}].push_back(int(t));
+      }
+  const double cos_crease = std::cos(params.crease_angle * M_PI / 180);
+  const double cos_smooth = std::cos(params.smooth_angle * M_PI / 180);
+  std::vector<std::vector<int>> smooth_neighbours(nt);
+  double convex_length = 0, concave_length = 0;
+  for (const auto& e : by_edge) {
+    if (e.second.size() != 2) continue;
+    const int t1 = e.second[0], t2 = e.second[1];
+    const double c = normal[size_t(t1)].dot(normal[size_t(t2)]);
+    if (c >= cos_smooth) {
+      smooth_neighbours[size_t(t1)].push_back(t2);
+      smooth_neighbours[size_t(t2)].push_back(t1);
+    } else if (c <= cos_crease) {
+      ++out.crease_edges;
+      // Convex when t2's far corner lies below t1's plane.
+      int far = triangles[size_t(t2)][0];
+      for (int v : triangles[size_t(t2)])
+        if (v != e.first.first && v != e.first.second) far = v;
+      const double side =
+          (points[size_t(far)] - points[size_t(e.first.first)]).dot(normal[size_t(t1)]);
+      const double length = (points[size_t(e.first.first)] - points[size_t(e.first.second)]).norm();
+      (side < 0 ? convex_length : concave_length) += length;
+    }
+  }
+  if (out.crease_edges == 0) {
+    out.problem = "no crease runs into it";
+    return out;
+  }
+  if (std::min(convex_length, concave_length) > 0.1 * std::max(convex_length, concave_length)) {
+    out.problem = "convex and concave creases meet at it";
+    return out;
+  }
+  out.convex = convex_length >= concave_length;
+
+  // Smooth regions of known faces; those with a face on the hole's border count.
+  std::vector<char> on_border(points.size(), 0);
+  for (size_t t = 0; t < nt; ++t)
+    if (is_fill[t])
+      for (int v : triangles[t]) on_border[size_t(v)] = !free[size_t(v)];
+  std::vector<int> region(nt, -1);
+  std::vector<detail::HeightField> fields;
+  for (size_t seed = 0; seed < nt; ++seed) {
+    if (is_fill[seed] || region[seed] >= 0) continue;
+    std::vector<int> faces{int(seed)};
+    region[seed] = -2;
+    for (size_t k = 0; k < faces.size(); ++k)
+      for (int g : smooth_neighbours[size_t(faces[k])])
+        if (region[size_t(g)] == -1) region[size_t(g)] = -2, faces.push_back(g);
+    bool touches = false;
+    for (int f : faces)
+      for (int v : triangles[size_t(f)]) touches = touches || on_border[size_t(v)];
+    if (int(faces.size()) < params.min_region_faces || !touches) {
+      for (int f : faces) region[size_t(f)] = -3;
+      continue;
+    }
+    for (int f : faces) region[size_t(f)] = int(fields.size());
+    // The region's frame and its quadric height field (a plane where it has few vertices).
+    std::vector<int> verts;
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    for (int f : faces) {
+      n += normal[size_t(f)];
+      for (int v : triangles[size_t(f)]) verts.push_back(v);
+    }
+    std::sort(verts.begin(), verts.end());
+    verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+    detail::HeightField hf;
+    hf.n = n.normalized();
+    hf.origin = Eigen::Vector3d::Zero();
+    for (int v : verts) hf.origin += points[size_t(v)];
+    hf.origin /= double(verts.size());
+    hf.u = hf.n.unitOrthogonal();
+    hf.v = hf.n.cross(hf.u);
+    const bool quadric = verts.size() >= 12;
+    Eigen::MatrixXd a(verts.size(), quadric ? 6 : 3);
+    Eigen::VectorXd z(verts.size());
+    for (size_t i = 0; i < verts.size(); ++i) {
+      const Eigen::Vector3d d = points[size_t(verts[i])] - hf.origin;
+      const double x = d.dot(hf.u), y = d.dot(hf.v);
+      if (quadric)
+        a.row(Eigen::Index(i)) << x * x, x * y, y * y, x, y, 1;
+      else
+        a.row(Eigen::Index(i)) << x, y, 1;
+      z[Eigen::Index(i)] = d.dot(hf.n);
+    }
+    const Eigen::VectorXd c = a.colPivHouseholderQr().solve(z);
+    if (quadric)
+      hf.c = c;
+    else
+      hf.c << 0, 0, 0, c[0], c[1], c[2];
+    const double residual = std::sqrt((a * c - z).squaredNorm() / double(verts.size()));
+    if (!(residual <= params.max_fit_residual * radius)) {
+      out.problem = "a face beside it is not smooth enough to extend";
+      return out;
+    }
+    fields.push_back(hf);
+  }
+  out.regions = int(fields.size());
+  if (fields.size() < 2) {
+    out.problem = "fewer than two smooth faces meet at it";
+    return out;
+  }
+
+  // Every fill vertex onto the solid's boundary: repeatedly onto the surface it lies farthest
+  // outside of (convex: the intersection of the faces' solids) or farthest inside of (concave:
+  // their union), which alternates onto a crease's line or a corner where faces meet.
+  out.points = points;
+  const double eps = 1e-9 * std::max(1.0, radius);
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (!free[i]) continue;
+    Eigen::Vector3d p = points[i];
+    for (int it = 0; it < 64; ++it) {
+      size_t pick = 0;
+      double s = fields[0].Offset(p);
+      for (size_t k = 1; k < fields.size(); ++k) {
+        const double sk = fields[k].Offset(p);
+        if (out.convex ? sk > s : sk < s) s = sk, pick = k;
+      }
+      if (std::abs(s) < eps) break;
+      p -= s * fields[pick].n;
+    }
+    out.points[i] = p;
+  }
+  return out;
+}
+
+} // namespace vcg_ext
