@@ -315,6 +315,8 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
     CurvatureImagesResult images;
     const HoleImage* hole = nullptr;
     std::vector<std::vector<Eigen::Vector3d>> fills; ///< per candidate, the whole patch
+    std::vector<double> errors;                      ///< per candidate
+    std::vector<char> applies;                       ///< per candidate: a surface prior's fill
   };
   std::vector<Trial> trials;
   std::vector<double> error(n, 0.0), detail(n, -1.0);
@@ -359,8 +361,10 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
                              1.25 * t.fake->radius / t.images.coarse.box.scale);
     vcg_ext::CreaseFill crease;
     if (creased) crease = CreasedPatch(f, params);
+    t.applies.assign(n, 1);
     for (size_t c = 0; c < n; ++c) {
       t.fills.push_back(f.patch.points);
+      if (c >= first_symmetry) t.applies[c] = 0;
       if (c >= first_detail && c < first_prior) {
         PatchDeformation d = DeformPatch(f, completed.at(c - first_detail), direct);
         if (d.result.solved) t.fills.back() = std::move(d.points);
@@ -373,14 +377,29 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
         }
       } else if (c == first_symmetry && mirror.problem.empty() && !mirror.points.empty()) {
         PatchDeformation d = DeformPatch(f, SurfaceImage(f, mirror.points, params), direct);
-        if (d.result.solved) t.fills.back() = std::move(d.points);
+        if (d.result.solved) t.fills.back() = std::move(d.points), t.applies[c] = 1;
       } else if (c == first_symmetry + 1 && mirror.problem.empty() && !mirror.points.empty()) {
-        t.fills.back() = mirror.points;
+        t.fills.back() = mirror.points, t.applies[c] = 1;
       } else if (creased && c == crease_candidate && crease.problem.empty()) {
-        t.fills.back() = crease.points;
+        t.fills.back() = crease.points, t.applies[c] = 1;
       }
-      error[c] += FakeHoleError(*t.fake, t.fills.back(), fill) / t.fake->radius;
+      t.errors.push_back(t.applies[c] ? FakeHoleError(*t.fake, t.fills.back(), fill) / t.fake->radius
+                                      : 0.0);
     }
+  }
+  // The surface priors (symmetry, creases) say nothing where a fake hole has no mirror image
+  // or no crease: there they stand for what the hole would get without them, the best of the
+  // other candidates, so that they win only where they apply and do better.
+  {
+    std::vector<double> base(first_symmetry, 0.0);
+    for (const Trial& t : trials)
+      for (size_t c = 0; c < first_symmetry; ++c) base[c] += t.errors[c];
+    const size_t fallback = size_t(std::min_element(base.begin(), base.end()) - base.begin());
+    for (Trial& t : trials)
+      for (size_t c = first_symmetry; c < n; ++c)
+        if (!t.applies[c]) t.errors[c] = t.errors[fallback], t.fills[c] = t.fills[fallback];
+    for (const Trial& t : trials)
+      for (size_t c = 0; c < n; ++c) error[c] += t.errors[c];
   }
   const int used = int(trials.size());
   hv.fake_holes = used;
