@@ -383,8 +383,8 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
       } else if (creased && c == crease_candidate && crease.problem.empty()) {
         t.fills.back() = crease.points, t.applies[c] = 1;
       }
-      t.errors.push_back(t.applies[c] ? FakeHoleError(*t.fake, t.fills.back(), fill) / t.fake->radius
-                                      : 0.0);
+      t.errors.push_back(
+          t.applies[c] ? FakeHoleError(*t.fake, t.fills.back(), fill) / t.fake->radius : 0.0);
     }
   }
   // The surface priors (symmetry, creases) say nothing where a fake hole has no mirror image

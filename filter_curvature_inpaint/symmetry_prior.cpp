@@ -1,5 +1,7 @@
 #include "symmetry_prior.h"
 
+#include <vcg_ext/fill_extent.h>
+
 #include <QString>
 
 #include <algorithm>
@@ -81,18 +83,12 @@ vcg_ext::MirroredFill MirrorHole(const SymmetryPrior& prior, const vcg_ext::Patc
   };
   std::vector<Eigen::Vector3d> points(patch.points.size());
   for (size_t i = 0; i < points.size(); ++i) points[i] = to_prior(patch.points[i]);
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  int fill = 0;
-  for (size_t i = 0; i < points.size(); ++i)
-    if (free[i]) centre += points[i], ++fill;
-  if (fill == 0) {
+  Eigen::Vector3d centre;
+  double radius = 0;
+  if (!vcg_ext::FillExtent(points, free, &centre, &radius)) {
     best.problem = "the hole has no fill";
     return best;
   }
-  centre /= fill;
-  double radius = 0;
-  for (size_t i = 0; i < points.size(); ++i)
-    if (free[i]) radius = std::max(radius, (points[i] - centre).norm());
   vcg_ext::KnownSurface known;
   known.index = prior.index.get();
   known.normals = &prior.normals;

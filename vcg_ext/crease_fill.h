@@ -7,6 +7,8 @@
 // rounds them away.
 #pragma once
 
+#include "fill_extent.h"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -75,19 +77,12 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
                                   .cross(points[size_t(f[2])] - points[size_t(f[0])]);
     normal[t] = n.norm() > 0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d::Zero();
   }
-  // The hole's size, from its fill.
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  int fill_vertices = 0;
-  for (size_t i = 0; i < points.size(); ++i)
-    if (free[i]) centre += points[i], ++fill_vertices;
-  if (fill_vertices == 0) {
+  Eigen::Vector3d centre;
+  double radius = 0;
+  if (!FillExtent(points, free, &centre, &radius)) {
     out.problem = "the hole has no fill";
     return out;
   }
-  centre /= fill_vertices;
-  double radius = 0;
-  for (size_t i = 0; i < points.size(); ++i)
-    if (free[i]) radius = std::max(radius, (points[i] - centre).norm());
 
   // Edges between known faces: smooth joins, creases (with their sense).
   std::map<std::pair<int, int>, std::vector<int>> by_edge;

@@ -69,6 +69,17 @@ inline bool InpaintExemplar(MaskedImage& image, const ExemplarParams& params) {
     return e;
   };
 
+  // The mean confidence of the patch around (x, y), over its pixels inside the image.
+  auto patch_confidence = [&](int x, int y) {
+    double c = 0;
+    int n = 0;
+    for (int dy = -r; dy <= r; ++dy)
+      for (int dx = -r; dx <= r; ++dx)
+        if (x + dx >= 0 && y + dy >= 0 && x + dx < w && y + dy < h)
+          c += confidence[image.At(x + dx, y + dy)], ++n;
+    return c / n;
+  };
+
   std::vector<int> front;
   for (;;) {
     // The fill front: unfilled pixels beside a filled one.
@@ -85,13 +96,7 @@ inline bool InpaintExemplar(MaskedImage& image, const ExemplarParams& params) {
     int target = front.front();
     for (int p : front) {
       const int x = p % w, y = p / w;
-      double c = 0;
-      int n = 0;
-      for (int dy = -r; dy <= r; ++dy)
-        for (int dx = -r; dx <= r; ++dx)
-          if (x + dx >= 0 && y + dy >= 0 && x + dx < w && y + dy < h)
-            c += confidence[image.At(x + dx, y + dy)], ++n;
-      c /= n;
+      const double c = patch_confidence(x, y);
       // The front's normal: towards the filled side; the image gradient from filled pixels
       // one and two steps out.
       double nx = double(filled_at(x + 1, y)) - double(filled_at(x - 1, y));
@@ -138,13 +143,7 @@ inline bool InpaintExemplar(MaskedImage& image, const ExemplarParams& params) {
       if (sx >= 0 && sy >= 0 && sx < w && sy < h) consider(int(image.At(sx, sy)));
     }
     // Copy the source's pixels into the target's unfilled ones, at the target's confidence.
-    double patch_confidence = 0;
-    int n = 0;
-    for (int dy = -r; dy <= r; ++dy)
-      for (int dx = -r; dx <= r; ++dx)
-        if (tx + dx >= 0 && ty + dy >= 0 && tx + dx < w && ty + dy < h)
-          patch_confidence += confidence[image.At(tx + dx, ty + dy)], ++n;
-    patch_confidence /= n;
+    const double copied_confidence = patch_confidence(tx, ty);
     const int bx = best % w, by = best / w;
     for (int dy = -r; dy <= r; ++dy)
       for (int dx = -r; dx <= r; ++dx) {
@@ -153,7 +152,7 @@ inline bool InpaintExemplar(MaskedImage& image, const ExemplarParams& params) {
         const size_t i = image.At(x, y);
         image.value[i] = image.value[image.At(bx + dx, by + dy)];
         filled[i] = 1;
-        confidence[i] = patch_confidence;
+        confidence[i] = copied_confidence;
         copied_from[i] = int(image.At(bx + dx, by + dy));
       }
   }
