@@ -59,17 +59,6 @@ TEST(ReflectiveSymmetry, FindsThePlaneOfASymmetricObjectUnderNoise) {
   Sample(m, 0.45 * kRotation, shift, points, normals);
   const double diagonal = 0.45 * 2 * std::sqrt(3.0); // about
   const auto planes = vcg_ext::DetectReflectiveSymmetry(points, normals, vcg_ext::SymmetryParams());
-  {
-    vcg_ext::SymmetryPlane t;
-    t.normal = kRotation * Eigen::Vector3d::UnitX();
-    t.offset = t.normal.dot(shift);
-    vcg_ext::PointIndex index(points);
-    std::vector<int> all;
-    for (int i = 0; i < int(points.size()); ++i) all.push_back(i);
-    vcg_ext::detail::MeasurePlane(all, normals, index, 0.01, t);
-    fprintf(stderr, "truth %.3f %.3f %.3f %.4f cov %.3f\n", t.normal.x(), t.normal.y(),
-            t.normal.z(), t.offset, t.coverage);
-  }
   ASSERT_FALSE(planes.empty());
   const Eigen::Vector3d truth = kRotation * Eigen::Vector3d::UnitX();
   const double angle = std::acos(std::min(1.0, std::abs(planes[0].normal.dot(truth)))) * 180 / M_PI;
