@@ -14,8 +14,8 @@ the result is watertight and manifold and every input vertex kept bit for bit. -
 `fill --oracle` (the curvature image painted from the ground truth: the ceiling of any
 inpainter) with its per-stage curvature spreads. --sweep-detail runs `fill --detail A` for each
 A (choose the default on the tuning half); --variant runs `fill ARGS` as a column NAME ({gt} in
-ARGS is the hole's ground truth); variants named after a validation candidate ("symmetry",
-"symmetry surface", with --pick K of that variation) enter the validated-choice table.
+ARGS is the hole's ground truth); variants named after a validation candidate (for example
+"creases=--pick creases --fake-holes 0") enter the validated-choice table.
 --only keeps the rows of the named meshes (file names without .ply). --plots writes docs/holdout_rms_ratio.png and
 docs/holdout_detail_vs_rms.png (gnuplot). FILL ARGS go to every `fill` run.
 """

@@ -517,6 +517,12 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& 
   }
   hv.inpaint_s = Since(t);
   ScoreAndPick(hv, params.pick);
+  if (!params.pick_kind.empty())
+    for (size_t j = 0; j < hv.variations.size(); ++j)
+      if (KindOf(hv, j) == params.pick_kind) {
+        hv.pick = int(j) + 1;
+        break;
+      }
   return hv;
 }
 

@@ -33,6 +33,9 @@ struct HoleFillParams {
   InpaintParams inpaint;
   std::string mode = "direct"; ///< "direct" or "paper"
   int pick = 0;                ///< 0: the best score; k >= 1: variation k of every hole
+  /// Non-empty: the first variation of this kind ("creases", ...) of every hole that has one,
+  /// the automatic pick elsewhere (benchmarks: what a prior does where it applies).
+  std::string pick_kind;
   vcg_ext::DirectDeformationParams direct;
   vcg_ext::PaperDeformationParams paper;
   ValidationParams validation;

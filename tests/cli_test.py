@@ -351,6 +351,15 @@ class DetailAndValidation(TempDirTest):
         self.assertEqual([h["validation"]["choice"] for h in holes],
                          [h["validation"]["choice"] for h in holes_again])
 
+    def test_pick_a_kind_where_a_hole_has_it(self):
+        _, holes, _ = self.fill("--pick", "exemplar", "--fake-holes", "0")
+        for h in holes:
+            self.assertEqual(h["kind"], "exemplar" if "exemplar" in h["kinds"] else "continuation")
+            self.assertEqual(h["kinds"][h["pick"] - 1], h["kind"])
+        r = run([TOOL, "fill", self.SAMPLE, self.path("x.ply"), "--pick", "mirror"])
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("--pick needs auto, a variation number >= 1 or a kind", r.stderr)
+
     def test_no_fake_holes_is_the_variation_score(self):
         _, holes, log = self.fill("--fake-holes", "0")
         for h in holes:

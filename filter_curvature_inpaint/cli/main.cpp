@@ -32,7 +32,9 @@ const char* const kUsage =
     "                   [--no-symmetry] [--no-exemplar] [--no-creases] [--oracle GT]\n"
     "      The main job: fill every hole of IN with detail (coarse fill, curvature images,\n"
     "      inpainting, deformation to the chosen variation) and write OUT. --pick auto (default)\n"
-    "      takes the best-scored variation. Backends and their options as for inpaint.\n"
+    "      takes the validated (or best-scored) variation; --pick KIND the first variation of\n"
+    "      that kind where a hole has one (exemplar, symmetry, symmetry surface, creases).\n"
+    "      Backends and their options as for inpaint.\n"
     "      --from-images DIR deforms to hole_<k>_inpainted.png, inpainted by hand in DIR\n"
     "      after `images IN DIR --size PX` (same --max-hole-edges, --context, --size).\n"
     "      --fake-holes K (default 4): fill each hole the way (coarse fill, or detail 0, 0.5,\n"
@@ -260,10 +262,16 @@ int Fill(Args& args) {
   p.exemplar = !args.Flag("--no-exemplar");
   p.creases = !args.Flag("--no-creases");
   const std::string pick = args.Option("--pick", "auto");
-  if (pick != "auto") {
+  const std::vector<std::string> kinds{"continuation", "exemplar", "symmetry", "symmetry surface",
+                                       "creases"};
+  if (std::find(kinds.begin(), kinds.end(), pick) != kinds.end()) {
+    p.pick_kind = pick;
+  } else if (pick != "auto") {
     char* end = nullptr;
     const long k = std::strtol(pick.c_str(), &end, 10);
-    if (*end != '\0' || k < 1) throw UsageError("--pick needs auto or a variation number >= 1");
+    if (*end != '\0' || k < 1)
+      throw UsageError("--pick needs auto, a variation number >= 1 or a kind (continuation, "
+                       "exemplar, symmetry, symmetry surface, creases)");
     p.pick = int(k);
   }
   p.mode = args.Option("--mode", p.mode);
