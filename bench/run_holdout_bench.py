@@ -23,6 +23,7 @@ import json
 import os
 import random
 import re
+import shlex
 import statistics
 import sys
 import tempfile
@@ -260,7 +261,7 @@ def main():
                 _, s = timed([TOOL, "fill", inp, out, "--detail", a, *fill_args])
                 row[f"detail {a}"] = measure(gt, inp, out, s)
             for vname, vargs in variants:
-                _, s = timed([TOOL, "fill", inp, out, *vargs.replace("{gt}", gt).split()])
+                _, s = timed([TOOL, "fill", inp, out, *shlex.split(vargs.replace("{gt}", gt))])
                 row[vname] = measure(gt, inp, out, s)
             if oracle:
                 _, s = timed([TOOL, "fill", inp, out, "--oracle", gt, "--report", report, *fill_args])
