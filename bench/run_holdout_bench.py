@@ -206,6 +206,19 @@ def print_report(rows, split, sweep, variants, oracle, plots):
         print("| hole | validated choice | best by ground truth | its RMS | best RMS |")
         print("|---|---|---|---|---|")
         print("\n".join(lines))
+    if any(name == "no priors" for name, _ in variants):
+        # Where the validation chose a prior, what the hole gained over the fill without them.
+        print("\nPriors chosen by the validation, and the fill's RMS there against the same fill "
+              "without the priors (`no priors`)\n")
+        print("| prior | chosen on | RMS ratio to no priors (each hole) | closer than without |")
+        print("|---|---|---|---|")
+        for prior in ("exemplar", "symmetry", "symmetry surface", "creases"):
+            chosen = [r for r in rows
+                      if (r["fill_report"][0].get("validation") or {}).get("choice") == prior]
+            gains = [ratio(r["fill"]["rms"], r["no priors"]["rms"]) for r in chosen]
+            cells = ", ".join(f"{r['name']} {g:.2f}" for r, g in zip(chosen, gains)) or "-"
+            print(f"| {prior} | {len(chosen)} of {len(rows)} | {cells} | "
+                  f"{sum(g < 1 for g in gains)} of {len(chosen)} |")
     if oracle:
         print("\nOracle: curvature spread carried per stage, as a fraction of the ground truth's "
               "(image: its hole pixels; target: at the fill's vertices; result: the deformed fill)\n")

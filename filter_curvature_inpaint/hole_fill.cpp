@@ -787,6 +787,10 @@ void CheckHoleFillParams(const HoleFillParams& p) {
   RequireRange(p.validation.fake_holes, 0, 16, "the fake holes per hole");
   RequireRange(p.validation.image_size, 16, 8192, "the fake holes' image size");
   for (double a : p.validation.details) RequireRange(a, 0, 10, "a validated detail amplitude");
+  RequireRange(p.symmetry.detection.tolerance, 1e-6, 1, "the symmetry tolerance");
+  RequireRange(p.symmetry.detection.min_coverage, 0, 1, "the symmetry's minimum coverage");
+  RequireRange(p.crease_fill.crease_angle, 1, 179, "the crease angle");
+  RequireRange(p.crease_fill.smooth_angle, 0, 179, "the smooth angle");
 }
 
 HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackPos* cb,

@@ -114,6 +114,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   p.inpaint.size = in.Int();
   p.inpaint.http.total_timeout_s = in.Real();
   p.inpaint.http.max_retries = in.Int();
+  p.symmetry.enabled = in.Next() & 1;
+  p.exemplar = in.Next() & 1;
+  p.creases = in.Next() & 1;
+  p.crease_fill.crease_angle = in.Real();
+  p.symmetry.detection.tolerance = in.Real();
 
   bool valid = true;
   try {
