@@ -590,6 +590,8 @@ void DeformHole(const HoleImage& hi, size_t k, const vcg_ext::CoarseFillResult& 
   report.choice = hv.choice;
   report.fake_holes = hv.fake_holes;
   report.validation_note = hv.validation_note;
+  report.symmetry_note = hv.symmetry_note;
+  report.crease_note = hv.crease_note;
   report.inpaint_s = hv.inpaint_s;
   report.truth_spread = hv.truth_spread;
   report.scores = hv.scores;
@@ -1019,12 +1021,14 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
       o << ", \"curvature_spread\": {\"truth\": " << r.truth_spread.truth
         << ", \"truth_image\": " << r.truth_spread.image << ", \"target\": " << r.target_spread
         << ", \"result\": " << r.result_spread << "}";
-    if (!r.problem.empty()) {
-      std::string p = r.problem;
-      for (auto& c : p)
+    auto quoted = [](std::string t) {
+      for (auto& c : t)
         if (c == '"' || c == '\\') c = '\'';
-      o << ", \"problem\": \"" << p << "\"";
-    }
+      return '"' + t + '"';
+    };
+    if (!r.symmetry_note.empty()) o << ", \"no_symmetry\": " << quoted(r.symmetry_note);
+    if (!r.crease_note.empty()) o << ", \"no_creases\": " << quoted(r.crease_note);
+    if (!r.problem.empty()) o << ", \"problem\": " << quoted(r.problem);
     o << "}";
   }
   o << "\n  ]\n}\n";

@@ -332,13 +332,12 @@ class DetailAndValidation(TempDirTest):
         for k, h in enumerate(holes, 1):
             v = h["validation"]
             names = [c["name"] for c in v["candidates"]]
-            self.assertEqual(names[:6], ["coarse", "detail 0", "detail 0.5", "detail 1", "detail 2",
-                                         "exemplar"])
-            # Where the hole's mirror image is known surface, the symmetry prior's two more.
-            self.assertIn(names[6:], [[], ["symmetry", "symmetry surface"], ["creases"],
+            self.assertEqual(names[:5], ["coarse", "detail 0", "detail 0.5", "detail 1", "detail 2"])
+            # Where the hole's mirror image is known surface, the symmetry prior's two more; the
+            # exemplar only when asked for.
+            self.assertIn(names[5:], [[], ["symmetry", "symmetry surface"], ["creases"],
                                       ["symmetry", "symmetry surface", "creases"]])
-            # Four exemplars, or none where the hole's image has no known patch to copy.
-            self.assertIn(h["kinds"][4:], [["exemplar"] * 4 + names[6:], names[6:]])
+            self.assertEqual(h["kinds"][4:], names[5:])
             self.assertGreaterEqual(v["fake_holes"], 1)
             errors = {c["name"]: c["error"] for c in v["candidates"]}
             best = min(errors.values())
@@ -352,7 +351,7 @@ class DetailAndValidation(TempDirTest):
                          [h["validation"]["choice"] for h in holes_again])
 
     def test_pick_a_kind_where_a_hole_has_it(self):
-        _, holes, _ = self.fill("--pick", "exemplar", "--fake-holes", "0")
+        _, holes, _ = self.fill("--exemplar", "--pick", "exemplar", "--fake-holes", "0")
         for h in holes:
             self.assertEqual(h["kind"], "exemplar" if "exemplar" in h["kinds"] else "continuation")
             self.assertEqual(h["kinds"][h["pick"] - 1], h["kind"])

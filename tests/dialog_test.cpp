@@ -211,6 +211,8 @@ private slots:
     Find<QSpinBox>(d, "variations")->setValue(2);
     Find<QSpinBox>(d, "fakeHoles")->setValue(0); // the automatic pick is then a continuation
     QVERIFY(Find<QCheckBox>(d, "symmetry")->isChecked());
+    QVERIFY(!Find<QCheckBox>(d, "exemplar")->isChecked()); // on request only
+    Find<QCheckBox>(d, "exemplar")->setChecked(true);
     d.Inpaint();
     QTRY_VERIFY_WITH_TIMEOUT(!d.Busy(), 120000);
     QCOMPARE(int(d.Holes().size()), 1);

@@ -97,29 +97,30 @@ class MeshlabServer(TempDirTest):
 
     def test_symmetry_and_exemplar_parameters_reach_the_pipeline(self):
         # Igea is mirror-symmetric: the shipped script finds its plane and validates the
-        # exemplar and (where the hole's mirror image is scan) the symmetry candidates; with
-        # both parameters off, neither is found, tried or offered.
+        # symmetry candidates (the hole's mirror image is scan), not the exemplar (off by
+        # default); with the two parameters swapped, the exemplar and no symmetry.
         src = self.punched("igea_190k.ply", 61000, 0.03)
         with open(os.path.join(SCRIPTS, "curvature_inpaint_hole_fill.mlx")) as f:
             shipped = f.read()
         self.assertIn('name="Symmetry" value="true"', shipped)
-        self.assertIn('name="Exemplar" value="true"', shipped)
-        r = self.meshlabserver(src, self.path("on.ply"),
+        self.assertIn('name="Exemplar" value="false"', shipped)
+        r = self.meshlabserver(src, self.path("shipped.ply"),
                                os.path.join(SCRIPTS, "curvature_inpaint_hole_fill.mlx"))
         log = r.stdout + r.stderr
         self.assertEqual(r.returncode, 0, log)
         self.assertRegex(log, r"symmetry: plane \(")
-        self.assertRegex(log, r"validation 1: .*exemplar [\d.]+.*symmetry [\d.]+, symmetry surface")
-        script = self.path("off.mlx")
+        self.assertRegex(log, r"validation 1: .*detail 2 [\d.]+, symmetry [\d.]+, symmetry surface")
+        self.assertNotIn("exemplar", log)
+        script = self.path("swapped.mlx")
         with open(script, "w") as f:
             f.write(shipped.replace('name="Symmetry" value="true"', 'name="Symmetry" value="false"')
-                    .replace('name="Exemplar" value="true"', 'name="Exemplar" value="false"'))
-        r = self.meshlabserver(src, self.path("off.ply"), script)
+                    .replace('name="Exemplar" value="false"', 'name="Exemplar" value="true"'))
+        r = self.meshlabserver(src, self.path("swapped.ply"), script)
         log = r.stdout + r.stderr
         self.assertEqual(r.returncode, 0, log)
         self.assertNotIn("symmetry", log)
-        self.assertNotIn("exemplar", log)
-        self.assertEqual(info(self.path("off.ply"))["holes"], 0)
+        self.assertRegex(log, r"validation 1: .*detail 2 [\d.]+, exemplar [\d.]+")
+        self.assertEqual(info(self.path("swapped.ply"))["holes"], 0)
 
     def edited_script(self, name, value_of):
         with open(os.path.join(SCRIPTS, name)) as f:

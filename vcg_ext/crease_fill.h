@@ -1,10 +1,10 @@
 // A hole's fill that carries the creases running into it across: the known context around
 // the hole is split at its sharp edges into smooth regions (a machined part's faces), each
 // region is fitted with a quadric height field, and every fill vertex is moved onto the
-// solid those surfaces bound (their intersection where the creases are convex, their union
-// where concave). Where two regions' surfaces meet, the crease comes back straight and sharp
-// as the extension of both; where three meet, a corner. A smooth cap (Liepa, CGAL, MeshLab)
-// rounds them away.
+// solid those surfaces bound (across a convex crease the intersection of the two faces'
+// solids, across a concave one their union). Where two regions' surfaces meet, the crease comes
+// back straight and sharp as the extension of both; where three meet, a corner. A smooth cap
+// (Liepa, CGAL, MeshLab) rounds them away.
 #pragma once
 
 #include "fill_extent.h"
@@ -31,11 +31,11 @@ struct CreaseFillParams {
 };
 
 struct CreaseFill {
-  std::vector<Eigen::Vector3d> points; ///< the whole patch, fill vertices moved
-  int regions = 0;                     ///< smooth regions meeting at the hole
-  int crease_edges = 0;                ///< sharp edges of the context
-  bool convex = true;
-  std::string problem; ///< why there is no fill; empty if there is one
+  std::vector<Eigen::Vector3d> points;     ///< the whole patch, fill vertices moved
+  int regions = 0;                         ///< smooth regions meeting at the hole
+  int crease_edges = 0;                    ///< sharp edges of the context
+  int convex_pairs = 0, concave_pairs = 0; ///< of faces that meet at a crease
+  std::string problem;                     ///< why there is no fill; empty if there is one
 };
 
 namespace detail {
@@ -63,7 +63,7 @@ struct HeightField {
 /// The crease-carrying fill of a hole's patch (`points`, `triangles`, `is_fill` per triangle,
 /// `free` per vertex: the fill's vertices), oriented consistently. A `problem` where the context
 /// has no crease, fewer than two smooth regions meet at the hole, a region is not smooth enough
-/// to extend, or the creases are convex and concave at once.
+/// to extend, or no two of them meet at a crease.
 inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
                                     const std::vector<std::array<int, 3>>& triangles,
                                     const std::vector<char>& is_fill, const std::vector<char>& free,
@@ -95,7 +95,11 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
   const double cos_crease = std::cos(params.crease_angle * M_PI / 180);
   const double cos_smooth = std::cos(params.smooth_angle * M_PI / 180);
   std::vector<std::vector<int>> smooth_neighbours(nt);
-  double convex_length = 0, concave_length = 0;
+  struct Crease {
+    int t1, t2;
+    double convex_length; ///< the edge's length, negative where it is concave
+  };
+  std::vector<Crease> creases;
   for (const auto& e : by_edge) {
     if (e.second.size() != 2) continue;
     const int t1 = e.second[0], t2 = e.second[1];
@@ -112,18 +116,13 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
       const double side =
           (points[size_t(far)] - points[size_t(e.first.first)]).dot(normal[size_t(t1)]);
       const double length = (points[size_t(e.first.first)] - points[size_t(e.first.second)]).norm();
-      (side < 0 ? convex_length : concave_length) += length;
+      creases.push_back({t1, t2, side < 0 ? length : -length});
     }
   }
   if (out.crease_edges == 0) {
     out.problem = "no crease runs into it";
     return out;
   }
-  if (std::min(convex_length, concave_length) > 0.1 * std::max(convex_length, concave_length)) {
-    out.problem = "convex and concave creases meet at it";
-    return out;
-  }
-  out.convex = convex_length >= concave_length;
 
   // Smooth regions of known faces; those with a face on the hole's border count.
   std::vector<char> on_border(points.size(), 0);
@@ -192,24 +191,47 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
     out.problem = "fewer than two smooth faces meet at it";
     return out;
   }
+  // How each pair of faces meets: the sense of the crease edges between them (the longer).
+  const size_t nr = fields.size();
+  std::vector<double> sense(nr * nr, 0.0); // > 0 convex, < 0 concave, 0: they do not meet
+  for (const Crease& c : creases) {
+    const int a = region[size_t(c.t1)], b = region[size_t(c.t2)];
+    if (a < 0 || b < 0 || a == b) continue;
+    sense[size_t(a) * nr + size_t(b)] += c.convex_length;
+    sense[size_t(b) * nr + size_t(a)] += c.convex_length;
+  }
+  for (size_t a = 0; a < nr; ++a)
+    for (size_t b = a + 1; b < nr; ++b)
+      if (sense[a * nr + b] != 0) ++(sense[a * nr + b] > 0 ? out.convex_pairs : out.concave_pairs);
+  if (out.convex_pairs + out.concave_pairs == 0) {
+    out.problem = "no two faces beside it meet at a crease";
+    return out;
+  }
 
-  // Every fill vertex onto the solid's boundary: repeatedly onto the surface it lies farthest
-  // outside of (convex: the intersection of the faces' solids) or farthest inside of (concave:
-  // their union), which alternates onto a crease's line or a corner where faces meet.
+  // Every fill vertex onto the solid's boundary: onto the nearest face, then, while it lies
+  // outside a face that meets this one at a convex crease (inside one at a concave crease),
+  // onto that one, which alternates onto the crease's line, or a corner where three meet.
   out.points = points;
   const double eps = 1e-9 * std::max(1.0, radius);
   for (size_t i = 0; i < points.size(); ++i) {
     if (!free[i]) continue;
     Eigen::Vector3d p = points[i];
+    size_t on = 0;
+    for (size_t k = 1; k < nr; ++k)
+      if (std::abs(fields[k].Offset(p)) < std::abs(fields[on].Offset(p))) on = k;
+    p -= fields[on].Offset(p) * fields[on].n;
     for (int it = 0; it < 64; ++it) {
-      size_t pick = 0;
-      double s = fields[0].Offset(p);
-      for (size_t k = 1; k < fields.size(); ++k) {
-        const double sk = fields[k].Offset(p);
-        if (out.convex ? sk > s : sk < s) s = sk, pick = k;
+      size_t worst = nr;
+      double violation = eps;
+      for (size_t k = 0; k < nr; ++k) {
+        const double meet = sense[on * nr + k];
+        if (k == on || meet == 0) continue;
+        const double s = fields[k].Offset(p), v = meet > 0 ? s : -s;
+        if (v > violation) violation = v, worst = k;
       }
-      if (std::abs(s) < eps) break;
-      p -= s * fields[pick].n;
+      if (worst == nr) break;
+      p -= fields[worst].Offset(p) * fields[worst].n;
+      on = worst;
     }
     out.points[i] = p;
   }

@@ -29,7 +29,7 @@ const char* const kUsage =
     "                   [--transformation-constant T] [--max-hole-edges N] [--size PX]\n"
     "                   [--images DIR] [--report FILE.json] [--from-images DIR] [--context C]\n"
     "                   [--fake-holes K] [--fake-hole-size PX] [--detail A] [--density D]\n"
-    "                   [--no-symmetry] [--no-exemplar] [--no-creases] [--oracle GT]\n"
+    "                   [--no-symmetry] [--exemplar] [--no-creases] [--oracle GT]\n"
     "      The main job: fill every hole of IN with detail (coarse fill, curvature images,\n"
     "      inpainting, deformation to the chosen variation) and write OUT. --pick auto (default)\n"
     "      takes the validated (or best-scored) variation; --pick KIND the first variation of\n"
@@ -43,9 +43,9 @@ const char* const kUsage =
     "      --fake-hole-size PX: the fake holes' images (default 256).\n"
     "      Where the object is mirror-symmetric and a hole's mirror image is known surface,\n"
     "      its mirrored curvature and surface are two more variations (validated like the\n"
-    "      rest, never picked unvalidated); --no-symmetry leaves them out. The embedded\n"
-    "      backend also offers N exemplar variations (patches of the known curvature copied\n"
-    "      in, ridges first; validated like the rest); --no-exemplar leaves them out.\n"
+    "      rest, never picked unvalidated); --no-symmetry leaves them out. --exemplar: the\n"
+    "      embedded backend also offers N exemplar variations (patches of the known\n"
+    "      curvature copied in, ridges first; validated like the rest).\n"
     "      A hole that creases run into also gets its context's faces extended across it\n"
     "      until they meet (sharp edges and corners; validated); --no-creases leaves it out.\n"
     "      --density D: the fill's vertex density (Liepa's alpha; default 2, coarse 1.41).\n"
@@ -259,7 +259,7 @@ int Fill(Args& args) {
       int(args.Integer("--fake-holes", detail_given ? 0 : p.validation.fake_holes, 0));
   p.validation.image_size = int(args.Integer("--fake-hole-size", p.validation.image_size, 16));
   p.symmetry.enabled = !args.Flag("--no-symmetry");
-  p.exemplar = !args.Flag("--no-exemplar");
+  p.exemplar = args.Flag("--exemplar");
   p.creases = !args.Flag("--no-creases");
   const std::string pick = args.Option("--pick", "auto");
   const std::vector<std::string> kinds{"continuation", "exemplar", "symmetry", "symmetry surface",
