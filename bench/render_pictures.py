@@ -5,8 +5,9 @@ scale per picture), shaded, seen along the ground truth's mean normal at the hol
 
     python3 bench/render_pictures.py      # writes docs/holes_<name>.png
 
-Holes: the Igea nose and the armadillo belly of ../shared/bench/cases.tsv, and the test half's
-larger fandisk hole of bench/holes.tsv (its CAD creases).
+Holes: the Igea nose of ../shared/bench/cases.tsv; of bench/holes.tsv, a koala hole of the
+test half (its mirror image holds the missing shape) and the tuning half's larger fandisk
+hole (its CAD creases).
 """
 import json
 import os
@@ -24,18 +25,20 @@ from support import read_binary_ply_xyz  # noqa: E402
 
 TOOL = os.path.join(BIN, "curvature-inpaint")
 BENCH = os.path.join(BIN, "bench_tools")
-CASES = [("igea_nose", "igea_190k.ply", 21537, "0.05"), ("armadillo_belly", "armadillo.ply", 35206, "0.04"),
-         ("fandisk_704", "fandisk.ply", None, "0.05")]
+# (name, mesh, seed vertex or None for the holes.tsv row's draw, radius fraction, row seed)
+CASES = [("igea_nose", "igea_190k.ply", 21537, "0.05", None),
+         ("koala_504", "koala.ply", None, "0.05", 504),
+         ("fandisk_703", "fandisk.ply", None, "0.05", 703)]
 
 
 def main():
     build()
     tmp = tempfile.mkdtemp(prefix="pictures-")
     try:
-        for name, mesh, vertex, frac in CASES:
+        for name, mesh, vertex, frac, row in CASES:
             gt = os.path.join(SHARED, "meshes", mesh)
             if vertex is None:
-                _, inp, vertex = punch(tmp, mesh, 704, frac)
+                _, inp, vertex = punch(tmp, mesh, row, frac)
             else:
                 inp = os.path.join(tmp, name + ".ply")
                 sh([TOOL, "punch", gt, inp, "--seed-vertex", str(vertex), "--radius-frac", frac])
