@@ -15,6 +15,7 @@ packages=(
   libgtest-dev googletest
   xvfb xauth xdotool x11-apps
   python3
+  slurm-wlm munge
 )
 
 as_root() {
@@ -26,12 +27,20 @@ for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q '^install ok installed$' || missing+=("$p")
 done
 
+# MeshLab's source package comes from the mirror this machine already installs bookworm from
+# (its own apt sources say which); the source entry is written once, beside them.
 srclist=/etc/apt/sources.list.d/curvature-inpaint-src.sources
 need_update=0
 if [ ! -f "$srclist" ]; then
-  as_root tee "$srclist" >/dev/null <<'SRC'
+  mirror=$(apt-get indextargets --format '$(REPO_URI) $(RELEASE) $(TARGET_OF)' 2>/dev/null |
+           awk '$2 == "bookworm" && $3 == "deb" { print $1; exit }')
+  if [ -z "$mirror" ]; then
+    echo "setup: no bookworm entry in this machine's apt sources to take the source package from" >&2
+    exit 1
+  fi
+  as_root tee "$srclist" >/dev/null <<SRC
 Types: deb-src
-URIs: http://deb.debian.org/debian
+URIs: $mirror
 Suites: bookworm
 Components: main
 Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg

@@ -557,3 +557,135 @@ class BadInput(TempDirTest):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class Batch(TempDirTest):
+    """`batch`: a collection filled, recorded, resumed, sharded and summarized."""
+
+    def scans(self, count=3, broken=True):
+        folder = self.path("in")
+        os.makedirs(folder, exist_ok=True)
+        for i in range(count):
+            r = run([TOOL, "punch", os.path.join(SHARED_MESHES, "fandisk.ply"),
+                     os.path.join(folder, f"scan{i + 1}.ply"), "--seed-vertex", str(1000 * (i + 1)),
+                     "--radius-frac", "0.03"])
+            self.assertEqual(r.returncode, 0, r.stderr)
+        if broken:
+            with open(os.path.join(folder, "broken.ply"), "w") as f:
+                f.write("ply\nformat ascii 1.0\nelement vertex 3\nend_header\n1 2\n")
+        return folder
+
+    def results(self, outdir, name="results.jsonl"):
+        with open(os.path.join(outdir, name)) as f:
+            return [json.loads(line) for line in f if line.strip()]
+
+    def test_a_folder_is_filled_recorded_and_resumed(self):
+        folder, out = self.scans(), self.path("out")
+        r = run([TOOL, "batch", folder, out, "--fake-holes", "0", "--size", "128"])
+        self.assertEqual(r.returncode, 1, r.stderr)  # one scan failed
+        lines = self.results(out)
+        self.assertEqual(sorted(os.path.basename(l["input"]) for l in lines),
+                         ["broken.ply", "scan1.ply", "scan2.ply", "scan3.ply"])
+        for l in lines:
+            if l["input"].endswith("broken.ply"):
+                self.assertEqual(l["status"], "failed")
+                self.assertIn("the mesh is empty", l["error"])  # its vertex line cut short
+                self.assertFalse(os.path.exists(os.path.join(out, "broken.ply")))
+                continue
+            self.assertEqual(l["status"], "ok", l)
+            self.assertEqual(l["sha256"], sha256(l["input"]))
+            self.assertEqual((l["holes_filled"], l["holes_left"]), (1, 0))
+            self.assertEqual(l["options"], ["--fake-holes", "0", "--size", "128"])
+            result = os.path.join(out, l["output"])
+            self.assertEqual(info(result)["holes"], 0)
+            before = read_binary_ply_xyz(l["input"])
+            self.assertEqual(read_binary_ply_xyz(result)[:len(before)], before)
+        self.assertIn("batch: 4 scans: 3 filled, 0 done before, 1 failed", r.stderr)
+        stamps = {n: os.stat(os.path.join(out, n)).st_mtime_ns for n in os.listdir(out) if n.endswith(".ply")}
+        # Again: the three are done (same bytes, same options), the broken one is tried again.
+        r = run([TOOL, "batch", folder, out, "--fake-holes", "0", "--size", "128"])
+        self.assertEqual(r.returncode, 1, r.stderr)
+        self.assertIn("batch: 4 scans: 0 filled, 3 done before, 1 failed", r.stderr)
+        self.assertEqual(len(self.results(out)), 5)
+        self.assertEqual(stamps, {n: os.stat(os.path.join(out, n)).st_mtime_ns for n in stamps})
+        # Other options are another job: every scan is filled again.
+        r = run([TOOL, "batch", folder, out, "--fake-holes", "0", "--size", "64"])
+        self.assertIn("batch: 4 scans: 3 filled, 0 done before, 1 failed", r.stderr)
+        # The summary: counts, the failure's reason, a CSV row per scan.
+        r = run([TOOL, "batch", "--summary", out])
+        self.assertEqual(r.returncode, 1, r.stderr)
+        self.assertIn("| 4 | 3 | 1 | 3 | 0 |", r.stdout)
+        self.assertIn("| broken.ply |", r.stdout)
+        with open(os.path.join(out, "summary.csv")) as f:
+            rows = f.read().splitlines()
+        self.assertEqual(rows[0], "input,status,holes_filled,holes_left,seconds,error")
+        self.assertEqual(len(rows), 5)
+
+    def test_shards_cover_the_manifest_once(self):
+        folder, out = self.scans(count=4, broken=False), self.path("out")
+        for k in (1, 2):
+            r = run([TOOL, "batch", folder, out, "--shard", f"{k}/2", "--fake-holes", "0", "--size", "64"])
+            self.assertEqual(r.returncode, 0, r.stderr)
+        one, two = self.results(out, "results.1-of-2.jsonl"), self.results(out, "results.2-of-2.jsonl")
+        names = [os.path.basename(l["input"]) for l in one + two]
+        self.assertEqual(sorted(names), ["scan1.ply", "scan2.ply", "scan3.ply", "scan4.ply"])
+        self.assertEqual([os.path.basename(l["input"]) for l in one], ["scan1.ply", "scan3.ply"])
+        # A Slurm array's task 2 of 2 (ids 0-1) is shard 2/2: its scans are done already.
+        env = dict(os.environ, SLURM_ARRAY_TASK_ID="1", SLURM_ARRAY_TASK_COUNT="2",
+                   SLURM_ARRAY_TASK_MIN="0")
+        import subprocess
+        r = subprocess.run([TOOL, "batch", folder, out, "--fake-holes", "0", "--size", "64"],
+                           capture_output=True, text=True, env=env, timeout=300)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("batch: 2 scans: 0 filled, 2 done before, 0 failed", r.stderr)
+        r = run([TOOL, "batch", "--summary", out])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("| 4 | 4 | 0 | 4 | 0 |", r.stdout)
+        r = run([TOOL, "batch", folder, out, "--shard", "3/2"])
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("--shard needs K/N", r.stderr)
+
+    def test_a_killed_batch_loses_no_finished_scan(self):
+        import signal
+        import subprocess
+        import time
+        folder, out = self.scans(count=4, broken=False), self.path("out")
+        p = subprocess.Popen([TOOL, "batch", folder, out], stderr=subprocess.DEVNULL)
+        results = os.path.join(out, "results.jsonl")
+        deadline = time.time() + 300
+        while time.time() < deadline and p.poll() is None:
+            if os.path.exists(results) and os.path.getsize(results) > 0:
+                break
+            time.sleep(0.01)
+        p.send_signal(signal.SIGKILL)
+        p.wait()
+        finished = [l["output"] for l in self.results(out)]
+        self.assertGreaterEqual(len(finished), 1)
+        self.assertLess(len(finished), 4, "killed half-way")
+        # Whatever is in the folder is a whole mesh; the finished ones are not done again.
+        for name in os.listdir(out):
+            if name.endswith(".ply"):
+                self.assertEqual(info(os.path.join(out, name))["holes"], 0, name)
+        stamps = {n: os.stat(os.path.join(out, n)).st_mtime_ns for n in finished}
+        r = run([TOOL, "batch", folder, out])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn(f"{len(finished)} done before", r.stderr)
+        self.assertEqual(sorted(l["output"] for l in self.results(out)),
+                         ["scan1.ply", "scan2.ply", "scan3.ply", "scan4.ply"])
+        self.assertEqual(stamps, {n: os.stat(os.path.join(out, n)).st_mtime_ns for n in stamps})
+
+    def test_a_text_manifest_carries_options_per_scan(self):
+        folder, out = self.scans(count=2, broken=False), self.path("out")
+        manifest = os.path.join(folder, "manifest.txt")
+        with open(manifest, "w") as f:
+            f.write("# scan and its own options\nscan1.ply --fake-holes 0\nscan2.ply --mode sideways\n")
+        r = run([TOOL, "batch", manifest, out, "--size", "64"])
+        self.assertEqual(r.returncode, 1, r.stderr)
+        lines = {os.path.basename(l["input"]): l for l in self.results(out)}
+        self.assertEqual(lines["scan1.ply"]["options"], ["--size", "64", "--fake-holes", "0"])
+        self.assertEqual(lines["scan1.ply"]["status"], "ok")
+        self.assertEqual(lines["scan2.ply"]["status"], "failed")
+        self.assertIn("--mode is direct or paper", lines["scan2.ply"]["error"])
+        r = run([TOOL, "batch", manifest, out, "--report", "r.json"])
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("--report is not a batch option", r.stderr)

@@ -1,5 +1,6 @@
 // curvature-inpaint: the command-line front end of the pipeline.
 #include "curvature_images.h"
+#include "batch.h"
 #include "hole_fill.h"
 #include "symmetry_prior.h"
 #include "inpaint/inpainter.h"
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <unistd.h>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -79,6 +81,17 @@ const char* const kUsage =
     "      (OPENAI_API_KEY, OPENAI_BASE_URL; --model dall-e-2 or gpt-image-1), sd-webui\n"
     "      (--url, SD_WEBUI_AUTH=user:pass), stability (STABILITY_API_KEY), comfyui (--url,\n"
     "      --workflow to use an edited copy of the shipped workflow).\n"
+    "  curvature-inpaint batch MANIFEST OUTDIR [--jobs J] [--shard K/N] [fill options]\n"
+    "      The main job over a collection: MANIFEST is a folder (its PLY/OBJ/OFF/STL files)\n"
+    "      or a text file of paths, each optionally followed by its own fill options. Each\n"
+    "      result goes to OUTDIR under the input's name, one JSON line per scan to\n"
+    "      OUTDIR/results.jsonl (results.K-of-N.jsonl for a shard). Resumable: a scan done\n"
+    "      before with the same bytes and options is skipped; a killed batch loses no\n"
+    "      finished scan. A failed scan is recorded and the rest go on (exit status 1).\n"
+    "      --jobs J: scans at once. --shard K/N, or a Slurm job array's SLURM_ARRAY_TASK_ID\n"
+    "      and SLURM_ARRAY_TASK_COUNT: every N-th scan from the K-th.\n"
+    "  curvature-inpaint batch --summary OUTDIR\n"
+    "      The results of every shard as a table, and OUTDIR/summary.csv.\n"
     "  curvature-inpaint info IN [--symmetry]\n"
     "      Print the vertex, face and hole counts of IN (boundary edges of each hole);\n"
     "      --symmetry also the mirror planes the symmetry prior finds in it.\n"
@@ -93,6 +106,9 @@ struct UsageError : std::runtime_error {
 class Args {
 public:
   Args(int argc, char** argv) : args_(argv + 1, argv + argc) {}
+  explicit Args(std::vector<std::string> args) : args_(std::move(args)) {}
+  /// What is left, in order.
+  const std::vector<std::string>& Rest() const { return args_; }
   std::string Command() {
     if (args_.empty()) throw UsageError("no command given");
     std::string c = args_.front();
@@ -249,7 +265,9 @@ int InpaintCommand(Args& args) {
   return 0;
 }
 
-int Fill(Args& args) {
+/// The options of `fill` that set its parameters (every one but the files, --report and
+/// --oracle), taken out of `args`.
+curvature_inpaint::HoleFillParams ReadFillOptions(Args& args) {
   curvature_inpaint::HoleFillParams p;
   const bool detail_given = args.Has("--detail");
   ReadBackendOptions(args, p.inpaint);
@@ -288,6 +306,11 @@ int Fill(Args& args) {
   p.inpainted_dir = args.Option("--from-images", "");
   const std::string context = args.Option("--context", "");
   if (!context.empty()) p.images.segmentation.context = ParsePositive("--context", context);
+  return p;
+}
+
+int Fill(Args& args) {
+  curvature_inpaint::HoleFillParams p = ReadFillOptions(args);
   const std::string report = args.Option("--report", "");
   const std::string oracle_path = args.Option("--oracle", "");
   const auto files = args.Positional(2);
@@ -312,6 +335,62 @@ int Fill(Args& args) {
       throw std::runtime_error("cannot write " + report);
   }
   return 0;
+}
+
+/// This task's shard: --shard K/N, else a Slurm job array's task (SLURM_ARRAY_TASK_ID less
+/// SLURM_ARRAY_TASK_MIN, of SLURM_ARRAY_TASK_COUNT), else the whole manifest.
+void ReadShard(Args& args, curvature_inpaint::BatchParams& p) {
+  const std::string shard = args.Option("--shard", "");
+  if (!shard.empty()) {
+    int k = 0, n = 0;
+    char extra = 0;
+    if (std::sscanf(shard.c_str(), "%d/%d%c", &k, &n, &extra) != 2 || n < 1 || k < 1 || k > n)
+      throw UsageError("--shard needs K/N with 1 <= K <= N");
+    p.shard = k - 1, p.shards = n;
+    return;
+  }
+  const char* id = std::getenv("SLURM_ARRAY_TASK_ID");
+  const char* count = std::getenv("SLURM_ARRAY_TASK_COUNT");
+  if (!id || !count) return;
+  const char* min = std::getenv("SLURM_ARRAY_TASK_MIN");
+  const int n = std::atoi(count), k = std::atoi(id) - (min ? std::atoi(min) : 0);
+  if (n < 1 || k < 0 || k >= n)
+    throw UsageError("SLURM_ARRAY_TASK_ID " + std::string(id) + " is not one of " +
+                     std::to_string(n) + " array tasks");
+  p.shard = k, p.shards = n;
+}
+
+int Batch(Args& args) {
+  const std::string summary = args.Option("--summary", "");
+  if (!summary.empty()) {
+    args.Positional(0);
+    return curvature_inpaint::SummarizeBatch(summary) ? 1 : 0;
+  }
+  curvature_inpaint::BatchParams p;
+  p.jobs = int(args.Integer("--jobs", 1, 1));
+  ReadShard(args, p);
+  const std::vector<std::string> rest = args.Rest();
+  if (rest.size() < 2 || rest[0][0] == '-' || rest[1][0] == '-')
+    throw UsageError("batch needs MANIFEST OUTDIR before the fill options");
+  p.outdir = rest[1];
+  p.options.assign(rest.begin() + 2, rest.end());
+  for (const char* own : {"--report", "--oracle", "--images", "--from-images"})
+    if (std::find(p.options.begin(), p.options.end(), own) != p.options.end())
+      throw UsageError(std::string(own) + " is not a batch option (each scan's result line has "
+                                          "its report)");
+  auto parse = [](const std::vector<std::string>& options) {
+    Args a(options);
+    curvature_inpaint::HoleFillParams params = ReadFillOptions(a);
+    a.Positional(0);
+    return params;
+  };
+  parse(p.options); // a bad option is the whole batch's error, before any scan
+  p.progress_bar = isatty(fileno(stderr));
+  const auto scans = curvature_inpaint::ReadManifest(rest[0]);
+  const auto done = curvature_inpaint::RunBatch(scans, p, parse);
+  std::fprintf(stderr, "batch: %d scans: %d filled, %d done before, %d failed\n", done.scans,
+               done.done, done.skipped, done.failed);
+  return done.failed ? 1 : 0;
 }
 
 int Info(Args& args) {
@@ -364,6 +443,7 @@ int main(int argc, char** argv) {
     if (command == "coarse") return Coarse(args);
     if (command == "images") return Images(args);
     if (command == "info") return Info(args);
+    if (command == "batch") return Batch(args);
     if (command == "inpaint") return InpaintCommand(args);
     if (command == "punch") return Punch(args);
     if (command == "-h" || command == "--help" || command == "help") {
