@@ -9,6 +9,10 @@ The collection: N scans (default 100) made from the fandisk and the rocker arm o
 run fills all of them with the default settings (embedded backend, fake-hole validation, the
 priors). Slurm (needs root and Debian's slurm-wlm, which scripts/setup-debian.sh installs):
 an array of as many one-core tasks as the machine has cores.
+
+A second table: the pool of inpainting servers, `fill --backend sd-webui` on a scan with 12
+holes against 1, 2 and 3 of the tests' AUTOMATIC1111 stand-ins, each answering a request
+after a fixed 4 s (a GPU's time for one inpainting).
 """
 import os
 import shutil
@@ -25,6 +29,31 @@ os.environ.setdefault("CI_SOURCE_DIR", ROOT)
 from slurm_test import SBATCH, OneNodeSlurm  # noqa: E402
 
 TOOL = os.path.join(BIN, "curvature-inpaint")
+
+
+def pool_table(tmp):
+    import inpaint_server
+    holed = os.path.join(tmp, "twelve.ply")
+    sh([os.path.join(BIN, "bench_tools"), "punch-many", os.path.join(SHARED, "meshes", "koala.ply"),
+        holed, "12", "3", "6"])
+    rows = []
+    servers = [inpaint_server.Server() for _ in range(3)]
+    try:
+        for n in (1, 2, 3):
+            args = [TOOL, "fill", holed, os.path.join(tmp, f"pool{n}.ply"), "--backend", "sd-webui",
+                    "--size", "256"]
+            for s in servers[:n]:
+                args += ["--url", s.url("slow")]
+            start = time.perf_counter()
+            subprocess.run(args, check=True, capture_output=True,
+                           env=dict(os.environ, SD_WEBUI_AUTH=inpaint_server.SD_AUTH))
+            seconds = time.perf_counter() - start
+            rows.append(f"| {n} | {seconds:.1f} | {60 * 12 / seconds:.1f} |")
+    finally:
+        for s in servers:
+            s.stop()
+    table("The pool: a scan with 12 holes, each server 4 s a request",
+          ["servers", "seconds", "holes per minute"], rows)
 
 
 def main():
@@ -78,6 +107,7 @@ def main():
                 slurm.stop()
         table(f"{count} scans (fandisk and rocker arm, one hole each), default settings",
               ["process", "seconds", "scans per minute"], rows)
+        pool_table(tmp)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 

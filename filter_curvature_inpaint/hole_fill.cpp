@@ -1,6 +1,7 @@
 #include "hole_fill.h"
 
 #include "fake_holes.h"
+#include "inpaint/server_pool.h"
 #include "pipeline.h"
 
 #include <vcg_ext/curvature_colormap.h>
@@ -526,6 +527,12 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& 
   return hv;
 }
 
+/// The pool of a run's servers, where several are given for a service.
+std::unique_ptr<ServerPool> MakePool(const InpaintParams& p) {
+  if (p.urls.empty() || p.backend == "embedded") return nullptr;
+  return std::make_unique<ServerPool>(p.urls, p.per_server);
+}
+
 /// The inpainting parameters with the callback as the network layer's cancel hook.
 InpaintParams WithCancel(const HoleFillParams& params, vcg::CallBackPos* cb, const int* progress) {
   InpaintParams inpaint = params.inpaint;
@@ -688,7 +695,9 @@ std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& 
   ip.color_vertices = false;
   const CurvatureImagesResult images = ComputeCurvatureImages(scratch, ip, cb);
   int progress = 0;
-  const InpaintParams inpaint = WithCancel(params, cb, &progress);
+  InpaintParams inpaint = WithCancel(params, cb, &progress);
+  const std::unique_ptr<ServerPool> pool = MakePool(params.inpaint);
+  inpaint.pool = pool.get();
   const vcg_ext::VertexFaces vf(scratch);
   const std::unique_ptr<SymmetryPrior> symmetry =
       UsesSymmetry(params) ? DetectSymmetry(scratch, images.coarse, params.symmetry.detection)
@@ -813,7 +822,9 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
   const bool local =
       chosen || !params.inpainted_dir.empty() || params.inpaint.backend == "embedded";
   int progress = 0;
-  const InpaintParams inpaint = WithCancel(params, local ? nullptr : cb, &progress);
+  InpaintParams inpaint = WithCancel(params, local ? nullptr : cb, &progress);
+  const std::unique_ptr<ServerPool> pool = MakePool(params.inpaint);
+  inpaint.pool = pool.get();
   struct HoleWork {
     HoleFillReport report;
     std::vector<Eigen::Vector3d> points; ///< the deformed patch; empty: keep the coarse fill
@@ -877,8 +888,11 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
                                ": preview again with the same settings");
     if (!local) {
       const int count = int(images.holes.size());
+      // One request at a time to a single service (which would rate-limit parallel ones), as
+      // many as a pool has room for.
       vcg_ext::ParallelFor(
-          count, 1, [&](int k) { fill_hole(result.coarse, k, images.holes[k]); },
+          count, pool ? pool->Capacity() : 1,
+          [&](int k) { fill_hole(result.coarse, k, images.holes[k]); },
           [&](int, int done) {
             progress = int(100.0 * done / std::max(count, 1));
             const std::string msg = "Curvature Inpaint: inpainted and deformed hole " +

@@ -300,5 +300,79 @@ class FillPipeline(TempDirTest):
         self.assertEqual(open(src, "rb").read(), digest)
 
 
+class ServerPool(TempDirTest):
+    """`fill` with three AUTOMATIC1111 stand-ins: the holes spread over them, one server lost
+    half-way, all of them down."""
+
+    SAMPLE = os.path.join(SOURCE, "meshes", "sample_holes.ply")
+
+    def fill(self, urls, out, *extra):
+        args = [TOOL, "fill", self.SAMPLE, out, "--size", "128", "--backend", "sd-webui",
+                "--fake-holes", "0", "--retries", "0", "--timeout", "20", *extra]
+        for u in urls:
+            args += ["--url", u]
+        import subprocess
+        return subprocess.run(args, capture_output=True, text=True, timeout=300,
+                              env=dict(os.environ, SD_WEBUI_AUTH=SD_AUTH))
+
+    def sd_requests(self, server):
+        return [r for r in server.httpd.requests if r[2] == "/sdapi/v1/img2img"]
+
+    def test_the_holes_spread_over_every_server(self):
+        servers = [Server() for _ in range(3)]
+        for s in servers:
+            self.addCleanup(s.stop)
+        out = self.path("pooled.ply")
+        r = self.fill([s.url("ok") for s in servers], out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual([len(self.sd_requests(s)) for s in servers], [1, 1, 1])
+        for s in servers:
+            self.assertEqual(s.violations, [])
+        # The same variations as from one server: a hole's are one server's answer to its seed.
+        single = Server()
+        self.addCleanup(single.stop)
+        r = self.fill([single.url("ok")], self.path("single.ply"))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(read_binary_ply_xyz(out), read_binary_ply_xyz(self.path("single.ply")))
+
+    def test_a_server_killed_half_way_loses_no_hole(self):
+        import subprocess
+        import sys
+        import threading
+        here = os.path.dirname(os.path.abspath(__file__))
+        # The third server in a process of its own, answering slowly, killed while it works.
+        doomed = subprocess.Popen(
+            [sys.executable, "-c", "import time, inpaint_server as s; srv = s.Server(); "
+             "print(srv.url('slow'), flush=True); time.sleep(600)"],
+            cwd=here, stdout=subprocess.PIPE, text=True)
+        self.addCleanup(doomed.kill)
+        slow_url = doomed.stdout.readline().strip()
+        servers = [Server() for _ in range(2)]
+        for s in servers:
+            self.addCleanup(s.stop)
+        threading.Timer(1.5, doomed.kill).start()
+        out = self.path("filled.ply")
+        r = self.fill([slow_url] + [s.url("ok") for s in servers], out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        # Every hole done, on the two left: one request each, and the killed one's again.
+        self.assertEqual(sum(len(self.sd_requests(s)) for s in servers), 3)
+        from support import info
+        self.assertEqual(info(out)["holes"], 0)
+
+    def test_every_server_down_is_one_error_and_no_output(self):
+        import socket
+        ports = []
+        for _ in range(3):
+            with socket.socket() as sock:  # a port nobody listens on
+                sock.bind(("127.0.0.1", 0))
+                ports.append(sock.getsockname()[1])
+        out = self.path("filled.ply")
+        r = self.fill([f"http://127.0.0.1:{p}" for p in ports], out)
+        self.assertNotEqual(r.returncode, 0)
+        last = r.stderr.strip().splitlines()[-1]
+        self.assertIn("every one of the 3 servers failed", last)
+        self.assertFalse(os.path.exists(out))
+
+
 if __name__ == "__main__":
     unittest.main()

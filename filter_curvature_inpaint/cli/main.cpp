@@ -1,6 +1,7 @@
 // curvature-inpaint: the command-line front end of the pipeline.
 #include "curvature_images.h"
 #include "batch.h"
+#include "inpaint/server_pool.h"
 #include "hole_fill.h"
 #include "symmetry_prior.h"
 #include "inpaint/inpainter.h"
@@ -80,7 +81,10 @@ const char* const kUsage =
     "      OUTDIR/variation_<i>.png. Backends: embedded (default, offline), openai\n"
     "      (OPENAI_API_KEY, OPENAI_BASE_URL; --model dall-e-2 or gpt-image-1), sd-webui\n"
     "      (--url, SD_WEBUI_AUTH=user:pass), stability (STABILITY_API_KEY), comfyui (--url,\n"
-    "      --workflow to use an edited copy of the shipped workflow).\n"
+    "      --workflow to use an edited copy of the shipped workflow). Several servers of\n"
+    "      one service: --url repeated, or --url-file F (one URL a line); fill spreads the\n"
+    "      holes over them, --per-server M (default 1) at once on each, a failing server\n"
+    "      set aside and its request sent to another.\n"
     "  curvature-inpaint batch MANIFEST OUTDIR [--jobs J] [--shard K/N] [fill options]\n"
     "      The main job over a collection: MANIFEST is a folder (its PLY/OBJ/OFF/STL files)\n"
     "      or a text file of paths, each optionally followed by its own fill options. Each\n"
@@ -125,6 +129,12 @@ public:
         return true;
       }
     return false;
+  }
+  /// Every value of an option given several times, in order.
+  std::vector<std::string> Options(const std::string& name) {
+    std::vector<std::string> values;
+    for (std::string v = Option(name, ""); !v.empty(); v = Option(name, "")) values.push_back(v);
+    return values;
   }
   std::string Option(const std::string& name, const std::string& fallback) {
     for (size_t i = 0; i < args_.size(); ++i)
@@ -229,7 +239,25 @@ int Images(Args& args) {
 /// the number of variations).
 void ReadBackendOptions(Args& args, curvature_inpaint::InpaintParams& p) {
   p.backend = args.Option("--backend", p.backend);
-  p.url = args.Option("--url", "");
+  std::vector<std::string> urls = args.Options("--url");
+  const std::string url_file = args.Option("--url-file", "");
+  if (!url_file.empty()) {
+    std::FILE* f = std::fopen(url_file.c_str(), "r");
+    if (!f) throw UsageError("cannot read --url-file " + url_file);
+    char line[4096];
+    while (std::fgets(line, sizeof line, f)) {
+      std::string u(line);
+      u = u.substr(0, u.find('#'));
+      u.erase(0, u.find_first_not_of(" \t\r\n"));
+      u.erase(u.find_last_not_of(" \t\r\n") + 1);
+      if (!u.empty()) urls.push_back(u);
+    }
+    std::fclose(f);
+    if (urls.empty()) throw UsageError("--url-file " + url_file + " lists no server");
+  }
+  if (urls.size() == 1) p.url = urls[0];
+  if (urls.size() > 1) p.urls = urls;
+  p.per_server = int(args.Integer("--per-server", p.per_server, 1));
   p.model = args.Option("--model", "");
   p.prompt = args.Option("--prompt", "");
   p.negative_prompt = args.Option("--negative-prompt", "");
@@ -253,6 +281,9 @@ int InpaintCommand(Args& args) {
   if (image.isNull()) throw std::runtime_error(files[0] + ": not a readable image");
   if (mask.isNull()) throw std::runtime_error(files[1] + ": not a readable image");
   std::fprintf(stderr, "inpainting with %s, %d variations\n", p.backend.c_str(), p.variations);
+  std::unique_ptr<curvature_inpaint::ServerPool> pool;
+  if (!p.urls.empty()) pool = std::make_unique<curvature_inpaint::ServerPool>(p.urls, p.per_server);
+  p.pool = pool.get();
   const auto variations = curvature_inpaint::Inpaint(image, mask, p);
   if (!QDir().mkpath(QString::fromStdString(files[2])))
     throw std::runtime_error("cannot create " + files[2]);

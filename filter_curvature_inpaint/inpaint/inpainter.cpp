@@ -1,5 +1,7 @@
 #include "inpainter.h"
 
+#include "server_pool.h"
+
 #include <vcg_ext/mesh_errors.h>
 
 #include <QBuffer>
@@ -427,6 +429,9 @@ void CheckInpaintParams(const InpaintParams& p) {
   RequireRange(p.http.max_retries, 0, 100, "the number of retries");
   RequireRange(p.http.backoff_s, 0, 3600, "the wait before a retry (s)");
   RequireRange(p.http.max_wait_s, 0, 86400, "the longest wait for a retry (s)");
+  RequireRange(p.per_server, 1, 64, "the requests in flight per server");
+  for (const auto& u : p.urls)
+    if (u.empty()) throw vcg_ext::InvalidParameterError("a server of the pool has no URL");
 }
 
 std::vector<QImage> Inpaint(const QImage& image, const QImage& mask, const InpaintParams& p) {
@@ -434,6 +439,7 @@ std::vector<QImage> Inpaint(const QImage& image, const QImage& mask, const Inpai
   CheckInpaintParams(p);
   if (image.isNull() || mask.isNull() || image.size() != mask.size())
     throw InpaintError(b + ": the image and the mask must be images of the same size");
+  if (p.pool && b != "embedded") return p.pool->Inpaint(image, mask, p);
   std::vector<QImage> raw;
   if (b == "embedded")
     raw = InpaintEmbedded(image, mask, p);

@@ -17,11 +17,19 @@
 
 namespace curvature_inpaint {
 
+class ServerPool;
+
 struct InpaintParams {
   std::string backend = "embedded"; ///< embedded, openai, sd-webui, stability, comfyui
   std::string url;                  ///< service address; empty: the backend's default
-  std::string model;                ///< openai: dall-e-2 (default) or gpt-image-1
-  std::string prompt;               ///< empty: the paper's prompt for the backend
+  /// Several servers of the backend (a pool; `url` is then ignored): FillHoles spreads the
+  /// holes over them, at most `per_server` requests in flight on each.
+  std::vector<std::string> urls;
+  int per_server = 1;
+  /// The pool a run shares (FillHoles makes it from `urls`); null: `url` alone. Not owned.
+  ServerPool* pool = nullptr;
+  std::string model;  ///< openai: dall-e-2 (default) or gpt-image-1
+  std::string prompt; ///< empty: the paper's prompt for the backend
   std::string negative_prompt;
   int variations = 4;
   uint32_t seed = 1;
