@@ -563,13 +563,7 @@ class Batch(TempDirTest):
     """`batch`: a collection filled, recorded, resumed, sharded and summarized."""
 
     def scans(self, count=3, broken=True):
-        folder = self.path("in")
-        os.makedirs(folder, exist_ok=True)
-        for i in range(count):
-            r = run([TOOL, "punch", os.path.join(SHARED_MESHES, "fandisk.ply"),
-                     os.path.join(folder, f"scan{i + 1}.ply"), "--seed-vertex", str(1000 * (i + 1)),
-                     "--radius-frac", "0.03"])
-            self.assertEqual(r.returncode, 0, r.stderr)
+        folder = self.collection(count)
         if broken:
             with open(os.path.join(folder, "broken.ply"), "w") as f:
                 f.write("ply\nformat ascii 1.0\nelement vertex 3\nend_header\n1 2\n")

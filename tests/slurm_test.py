@@ -10,7 +10,7 @@ import subprocess
 import time
 import unittest
 
-from support import SHARED_MESHES, SOURCE, TOOL, TempDirTest, info, run
+from support import SOURCE, TOOL, TempDirTest, info, run
 
 SBATCH = os.path.join(SOURCE, "scripts", "slurm", "curvature_inpaint_array.sbatch")
 
@@ -118,16 +118,6 @@ class JobArray(TempDirTest):
         self.addCleanup(self.slurm.stop)
         self.slurm.start()
 
-    def collection(self, count):
-        folder = self.path("scans")
-        os.makedirs(folder, exist_ok=True)
-        for i in range(count):
-            r = run([TOOL, "punch", os.path.join(SHARED_MESHES, "fandisk.ply"),
-                     os.path.join(folder, f"scan{i + 1}.ply"), "--seed-vertex", str(700 * (i + 1)),
-                     "--radius-frac", "0.03"])
-            self.assertEqual(r.returncode, 0, r.stderr)
-        return folder
-
     def submit(self, folder, out, *fill):
         return self.slurm.sbatch("--array=0-2", "--cpus-per-task=1", "--mem=1G",
                                  f"--output={self.path('task-%a.log')}",
@@ -141,7 +131,7 @@ class JobArray(TempDirTest):
         return lines
 
     def test_an_array_of_three_fills_nine_scans_once(self):
-        folder, out = self.collection(8), self.path("out")
+        folder, out = self.collection(8, 700), self.path("out")
         with open(os.path.join(folder, "unreadable.ply"), "wb") as f:
             f.write(b"\x00\x01 not a mesh")
         job = self.submit(folder, out, "--fake-holes", "0", "--size", "64")
@@ -162,7 +152,7 @@ class JobArray(TempDirTest):
         self.assertIn("| 9 | 8 | 1 | 8 | 0 |", r.stdout)
 
     def test_a_cancelled_array_resubmitted_completes_without_redoing(self):
-        folder, out = self.collection(9), self.path("out")
+        folder, out = self.collection(9, 700), self.path("out")
         job = self.submit(folder, out)  # with the validation: about a second a scan
         deadline = time.time() + 300
         while time.time() < deadline and len(self.lines(out)) < 2:

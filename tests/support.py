@@ -121,6 +121,17 @@ class TempDirTest(unittest.TestCase):
         self.assertEqual(info(twice)["holes"], 2)
         return twice
 
+    def collection(self, count, vertex_step=1000, name="scans"):
+        """A folder of `count` fandisks, scan<k>.ply, each with one hole at its own vertex."""
+        folder = self.path(name)
+        os.makedirs(folder, exist_ok=True)
+        for i in range(count):
+            r = run([TOOL, "punch", os.path.join(SHARED_MESHES, "fandisk.ply"),
+                     os.path.join(folder, f"scan{i + 1}.ply"),
+                     "--seed-vertex", str(vertex_step * (i + 1)), "--radius-frac", "0.03"])
+            self.assertEqual(r.returncode, 0, r.stderr)
+        return folder
+
     def punched(self, mesh, seed, radius_frac, name="punched.ply"):
         out = self.path(name)
         r = run([TOOL, "punch", os.path.join(SHARED_MESHES, mesh), out,
