@@ -66,7 +66,7 @@ def main():
         for i in range(count):
             mesh = ("fandisk.ply", "rocker_arm.ply")[i % 2]
             sh([TOOL, "punch", os.path.join(SHARED, "meshes", mesh),
-                os.path.join(scans, f"scan{i:03d}_{mesh}"), "--seed-vertex", str(97 * i + 11),
+                os.path.join(scans, f"scan{i:03d}_{mesh}"), "--seed-vertex", str((97 * i + 11) % 6000),
                 "--radius-frac", "0.03"])
         rows = []
 
