@@ -121,7 +121,7 @@ BatchSummary RunBatch(const std::vector<BatchScan>& all, const BatchParams& para
                       const FillOptionParser& parse) {
   if (params.shards < 1 || params.shard < 0 || params.shard >= params.shards)
     throw std::runtime_error("the shard must be K/N with 1 <= K <= N");
-  if (!QDir().mkpath(QString::fromStdString(params.outdir)))
+  if (!QDir().mkpath(QString::fromStdString(params.outdir + "/.partial")))
     throw std::runtime_error("cannot create " + params.outdir);
   std::vector<BatchScan> scans;
   for (size_t i = 0; i < all.size(); ++i)
@@ -199,7 +199,9 @@ BatchSummary RunBatch(const std::vector<BatchScan>& all, const BatchParams& para
         CMeshO m;
         const int mask = LoadMesh(scan.input, m);
         const HoleFillResult result = FillHoles(m, p);
-        SaveMesh(params.outdir + "/" + name, m, mask);
+        // Written in a hidden folder and renamed into place: a kill leaves nothing half-written
+        // among the results.
+        SaveMesh(params.outdir + "/" + name, m, mask, params.outdir + "/.partial");
         const HoleCensus left = CountHoles(m);
         QJsonArray holes;
         for (size_t k = 0; k < result.holes.size(); ++k) {

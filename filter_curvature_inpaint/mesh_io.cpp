@@ -582,13 +582,15 @@ int LoadMesh(const std::string& path, CMeshO& m) {
   return mask;
 }
 
-void SaveMesh(const std::string& path, CMeshO& m, int mask) {
+void SaveMesh(const std::string& path, CMeshO& m, int mask, const std::string& partial_dir) {
   using Exporter = vcg::tri::io::Exporter<CMeshO>;
   const std::string ext = Extension(path);
   if (!Supported(ext))
     throw MeshIoError(path + ": unsupported format \"" + ext + "\" (use .ply, .off, .obj or .stl)");
   // Same extension, so vcglib picks the same writer.
-  const std::string tmp = path + ".part" + std::to_string(::getpid()) + "." + ext;
+  const std::string beside =
+      partial_dir.empty() ? path : partial_dir + "/" + path.substr(path.find_last_of('/') + 1);
+  const std::string tmp = beside + ".part" + std::to_string(::getpid()) + "." + ext;
   const int err = Exporter::Save(m, tmp.c_str(), mask);
   if (err != 0) {
     std::remove(tmp.c_str());

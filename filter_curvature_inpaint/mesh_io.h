@@ -21,7 +21,8 @@ public:
 int LoadMesh(const std::string& path, CMeshO& m);
 
 /// Writes `m` to `path` with the attributes in `mask`. The file appears complete or not at
-/// all: it is written beside the target and renamed over it. Throws MeshIoError.
-void SaveMesh(const std::string& path, CMeshO& m, int mask);
+/// all: it is written beside the target (or in `partial_dir`, on the same file system) and
+/// renamed over it. Throws MeshIoError.
+void SaveMesh(const std::string& path, CMeshO& m, int mask, const std::string& partial_dir = "");
 
 } // namespace curvature_inpaint

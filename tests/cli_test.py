@@ -656,8 +656,10 @@ class Batch(TempDirTest):
         finished = [l["output"] for l in self.results(out)]
         self.assertGreaterEqual(len(finished), 1)
         self.assertLess(len(finished), 4, "killed half-way")
-        # Whatever is in the folder is a whole mesh; the finished ones are not done again.
+        # Whatever is in the folder is a whole mesh (a scan cut short was being written in
+        # .partial/); the finished ones are not done again.
         for name in os.listdir(out):
+            self.assertTrue(name.endswith(".ply") or name in ("results.jsonl", ".partial"), name)
             if name.endswith(".ply"):
                 self.assertEqual(info(os.path.join(out, name))["holes"], 0, name)
         stamps = {n: os.stat(os.path.join(out, n)).st_mtime_ns for n in finished}
