@@ -124,12 +124,8 @@ std::vector<std::unique_ptr<FakeHole>> CutFakeHoles(const CMeshO& m, const vcg_e
   std::vector<std::unique_ptr<FakeHole>> fakes;
   const auto& loop = coarse.holes[size_t(hole)].loop;
   if (loop.empty() || params.count <= 0) return fakes;
-  // The coarse fill appends: the scan's vertices and faces come before every new one.
-  size_t scan_vertices = m.vert.size(), scan_faces = m.face.size();
-  for (const auto& h : coarse.holes) {
-    for (int v : h.new_vertices) scan_vertices = std::min(scan_vertices, size_t(v));
-    for (int f : h.new_faces) scan_faces = std::min(scan_faces, size_t(f));
-  }
+  const ScanPart scan = ScanPartOf(m, coarse);
+  const size_t scan_vertices = scan.vertices, scan_faces = scan.faces;
   // Every loop as a ball: its centroid and the farthest of its vertices.
   struct Ball {
     Eigen::Vector3d centre;

@@ -204,8 +204,9 @@ void FilterCurvatureInpaintPlugin::initParameterSet(QAction* action, MeshModel&,
     par.addParam(RichInt("FakeHoles", d.validation.fake_holes, "Fake holes per hole",
                          "Embedded backend: cut this many holes of each hole's size into the "
                          "known surface near it, fill them every way (the coarse fill, detail "
-                         "amplitudes 0 to 2) and fill the real hole the way that came closest "
-                         "to the surface cut out (0-16). 0: every hole gets the detail below."));
+                         "amplitudes 0 to 2, the priors below) and fill the real hole the way "
+                         "that came closest to the surface cut out (0-16). 0: every hole gets "
+                         "the detail below."));
     par.addParam(RichFloat("Detail", float(d.inpaint.detail), "Detail",
                            "Embedded backend, with no fake holes: the amplitude of the "
                            "synthesised detail, relative to the surroundings' own (0-10; 0: "

@@ -279,10 +279,11 @@ std::vector<std::array<int, 3>> FillTriangles(const vcg_ext::PatchMesh& patch) {
 }
 
 /// Fake-hole validation of hole `hi` (embedded backend): every candidate (the coarse fill, the
-/// embedded inpainter at each detail amplitude, and with `symmetric` the mirror image's
-/// curvature and surface) fills fake holes of its size near it and is scored against the
-/// surface that was cut out; `hv` gets the candidates, their errors and the choice (-1 when
-/// there was no room for fake holes: the variation score then chooses alone).
+/// embedded inpainter at each detail amplitude, the exemplar if asked for, with `symmetric`
+/// the mirror image's curvature and surface, with `creased` the crease fill) fills fake holes
+/// of its size near it and is scored against the surface that was cut out; `hv` gets the
+/// candidates, their errors and the choice (-1 when there was no room for fake holes: the variation
+/// score then chooses alone).
 void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const InpaintParams& inpaint,
                   const ValidationContext& ctx, bool symmetric, bool creased, HoleVariations& hv) {
   const ValidationParams& vp = params.validation;
@@ -354,8 +355,8 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
     const std::vector<QImage> completed =
         InpaintEmbeddedAmplitudes(ToQImage(f.image, false), MaskImage(f.image), one, vp.details);
     // The fake hole's mirror image, on the known surface without the fake hole's own (which
-    // the whole mesh still has): where it has none, the symmetry candidates keep the coarse
-    // fill there, as the real hole would.
+    // the whole mesh still has), and its crease fill; where it has none, the prior stands for
+    // the best other candidate there (below).
     vcg_ext::MirroredFill mirror;
     if (symmetric)
       mirror = MirroredPatch(*ctx.symmetry, f, t.images.coarse.box, params, t.fake->centre,
@@ -376,10 +377,10 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
           PatchDeformation d = DeformPatch(f, copied[0], direct);
           if (d.result.solved) t.fills.back() = std::move(d.points);
         }
-      } else if (c == first_symmetry && mirror.problem.empty() && !mirror.points.empty()) {
+      } else if (symmetric && c == first_symmetry && mirror.problem.empty()) {
         PatchDeformation d = DeformPatch(f, SurfaceImage(f, mirror.points, params), direct);
         if (d.result.solved) t.fills.back() = std::move(d.points), t.applies[c] = 1;
-      } else if (c == first_symmetry + 1 && mirror.problem.empty() && !mirror.points.empty()) {
+      } else if (symmetric && c == first_symmetry + 1 && mirror.problem.empty()) {
         t.fills.back() = mirror.points, t.applies[c] = 1;
       } else if (creased && c == crease_candidate && crease.problem.empty()) {
         t.fills.back() = crease.points, t.applies[c] = 1;

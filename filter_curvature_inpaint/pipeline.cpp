@@ -108,4 +108,13 @@ HoleCensus CountHoles(const CMeshO& m) {
   return census;
 }
 
+ScanPart ScanPartOf(const CMeshO& m, const vcg_ext::CoarseFillResult& coarse) {
+  ScanPart scan{m.vert.size(), m.face.size()};
+  for (const auto& h : coarse.holes) {
+    for (int v : h.new_vertices) scan.vertices = std::min(scan.vertices, size_t(v));
+    for (int f : h.new_faces) scan.faces = std::min(scan.faces, size_t(f));
+  }
+  return scan;
+}
+
 } // namespace curvature_inpaint

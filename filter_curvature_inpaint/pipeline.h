@@ -33,6 +33,13 @@ private:
 /// `to`, compacted and in the same order: the fill of the copy equals the fill of `from`.
 void CopyMesh(const CMeshO& from, CMeshO& to);
 
+/// How much of `m` is the scan's after its coarse fill `coarse`: the fill only appends, so
+/// the vertices and faces before these counts are the scan's own.
+struct ScanPart {
+  size_t vertices = 0, faces = 0;
+};
+ScanPart ScanPartOf(const CMeshO& m, const vcg_ext::CoarseFillResult& coarse);
+
 /// One line per hole, then a summary line.
 std::vector<std::string> DescribeCoarseFill(const vcg_ext::CoarseFillResult& result);
 

@@ -1,5 +1,7 @@
 #include "symmetry_prior.h"
 
+#include "pipeline.h"
+
 #include <vcg_ext/fill_extent.h>
 
 #include <QString>
@@ -16,12 +18,8 @@ std::unique_ptr<SymmetryPrior> DetectSymmetry(const CMeshO& m,
   const auto start = std::chrono::steady_clock::now();
   auto prior = std::make_unique<SymmetryPrior>();
   prior->box = coarse.box;
-  // The coarse fill appends: the scan's vertices and faces come before every new one.
-  size_t scan_vertices = m.vert.size(), scan_faces = m.face.size();
-  for (const auto& h : coarse.holes) {
-    for (int v : h.new_vertices) scan_vertices = std::min(scan_vertices, size_t(v));
-    for (int f : h.new_faces) scan_faces = std::min(scan_faces, size_t(f));
-  }
+  const ScanPart scan = ScanPartOf(m, coarse);
+  const size_t scan_vertices = scan.vertices, scan_faces = scan.faces;
   std::vector<Eigen::Vector3d> normal(scan_vertices, Eigen::Vector3d::Zero());
   for (size_t f = 0; f < scan_faces; ++f) {
     const auto& face = m.face[f];

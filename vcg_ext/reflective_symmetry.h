@@ -271,11 +271,8 @@ DetectReflectiveSymmetry(const std::vector<Eigen::Vector3d>& points,
   std::vector<SymmetryPlane> refined;
   for (SymmetryPlane plane : guesses) {
     detail::RefinePlane(samples, normals, index, params, plane);
-    plane = [&] {
-      SymmetryPlane c = detail::Canonical(plane.normal, plane.offset);
-      detail::MeasurePlane(evaluate, normals, index, params.tolerance, c);
-      return c;
-    }();
+    plane = detail::Canonical(plane.normal, plane.offset);
+    detail::MeasurePlane(evaluate, normals, index, params.tolerance, plane);
     refined.push_back(plane);
   }
   std::stable_sort(

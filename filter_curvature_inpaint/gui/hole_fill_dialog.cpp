@@ -128,8 +128,9 @@ HoleFillDialog::HoleFillDialog(const CMeshO& mesh, QWidget* parent)
   fake_holes_->setValue(defaults.validation.fake_holes);
   fake_holes_->setToolTip("Embedded backend: cut this many holes of each hole's size into the "
                           "known surface near it, fill them every way (the coarse fill, detail "
-                          "0 to 2) and choose for the hole the way that came closest to the "
-                          "surface cut out. 0: every hole gets the detail below.");
+                          "0 to 2, the priors below) and choose for the hole the way that came "
+                          "closest to the surface cut out. 0: every hole gets the detail "
+                          "below.");
   form->addRow("&Fake holes per hole", fake_holes_);
   detail_ = new QDoubleSpinBox;
   detail_->setObjectName("detail");
