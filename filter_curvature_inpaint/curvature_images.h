@@ -3,7 +3,7 @@
 // image with the hole's mask: what an inpainter is given.
 #pragma once
 
-#include <common/ml_mesh_type.h>
+#include "meshlab_mesh.h"
 
 #include <QImage>
 #include <vcg_ext/apss_curvature.h>

@@ -4,7 +4,7 @@
 // without ground truth).
 #pragma once
 
-#include <common/ml_mesh_type.h>
+#include "meshlab_mesh.h"
 #include <vcg_ext/coarse_fill.h>
 #include <vcg_ext/hole_segmentation.h>
 

@@ -4,7 +4,7 @@
 // own I/O plugins do this inside the GUI and meshlabserver.
 #pragma once
 
-#include <common/ml_mesh_type.h>
+#include "meshlab_mesh.h"
 
 #include <stdexcept>
 #include <string>

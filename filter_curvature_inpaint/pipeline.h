@@ -3,7 +3,7 @@
 // results into the log lines users read.
 #pragma once
 
-#include <common/ml_mesh_type.h>
+#include "meshlab_mesh.h"
 #include <vcg_ext/coarse_fill.h>
 
 #include <string>

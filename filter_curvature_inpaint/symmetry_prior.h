@@ -3,7 +3,7 @@
 // fake-hole validation weighs against the continuation; nothing is forced on a hole).
 #pragma once
 
-#include <common/ml_mesh_type.h>
+#include "meshlab_mesh.h"
 #include <vcg_ext/coarse_fill.h>
 #include <vcg_ext/mirrored_fill.h>
 #include <vcg_ext/patch_extraction.h>

@@ -2,7 +2,7 @@
 // sequence of one-byte choices, and meshes built from triangle lists.
 #pragma once
 
-#include <common/ml_mesh_type.h>
+#include "meshlab_mesh.h"
 
 #include <QGuiApplication>
 

@@ -1,10 +1,8 @@
-// MeshLab filter plugin "Curvature Inpaint": hole filling with detail, after "Deep learning
-// of curvature features for shape completion". A thin layer over pipeline.h.
+// The plugin for MeshLab 2020.09 and earlier (MeshFilterInterface, the interface meshlabserver
+// loads): thin glue over filter_table.h and filter_run.h.
 #pragma once
 
 #include <common/interfaces.h>
-
-#include "hole_fill.h"
 
 class FilterCurvatureInpaintPlugin : public QObject, public MeshFilterInterface {
   Q_OBJECT
@@ -12,8 +10,6 @@ class FilterCurvatureInpaintPlugin : public QObject, public MeshFilterInterface 
   Q_INTERFACES(MeshFilterInterface)
 
 public:
-  enum { FP_COARSE_HOLE_FILL, FP_CURVATURE_IMAGES, FP_HOLE_FILL, FP_DEFORM_TO_IMAGE };
-
   FilterCurvatureInpaintPlugin();
 
   QString pluginName() const override;
@@ -27,12 +23,4 @@ public:
   void initParameterSet(QAction* action, MeshModel& m, RichParameterList& par) override;
   bool applyFilter(QAction* action, MeshDocument& md, const RichParameterList& par,
                    vcg::CallBackPos* cb) override;
-
-private:
-  bool applyCoarseHoleFill(MeshModel& mm, const RichParameterList& par, vcg::CallBackPos* cb);
-  bool applyCurvatureImages(MeshModel& mm, const RichParameterList& par, vcg::CallBackPos* cb);
-  bool applyHoleFill(MeshModel& mm, const RichParameterList& par, vcg::CallBackPos* cb);
-  bool applyHoleFillInteractive(MeshModel& mm, vcg::CallBackPos* cb);
-  bool runHoleFill(MeshModel& mm, const curvature_inpaint::HoleFillParams& p, vcg::CallBackPos* cb,
-                   const std::vector<curvature_inpaint::HoleVariations>* chosen = nullptr);
 };

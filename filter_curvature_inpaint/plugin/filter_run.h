@@ -1,0 +1,57 @@
+// Runs one of the table's filters on a MeshLab mesh: the one implementation behind both
+// adapters. The adapters turn MeshLab's parameter list into ParamValues, pass MeshLab's log and
+// progress callback, and turn a FilterError into their interface's way of failing.
+#pragma once
+
+#include "filter_table.h"
+
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+#include <cstring> // wrap/callback.h uses strcpy without including it
+#include <wrap/callback.h>
+
+class MeshModel;
+class RichParameterList;
+
+namespace curvature_inpaint {
+namespace plugin {
+
+/// A filter failed; what() says why and that the mesh was not changed.
+struct FilterError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct FilterEnvironment {
+  vcg::CallBackPos* progress = nullptr;
+  std::function<void(const std::string&)> log;  ///< MeshLab's log, info level
+  std::function<void(const std::string&)> warn; ///< MeshLab's log, warning level
+};
+
+/// Whether the filter runs in the MeshLab GUI, where the filters with their own dialog open it.
+/// meshlabserver, PyMeshLab and scripts never block on one (nor does the GUI when
+/// CURVATURE_INPAINT_NO_DIALOG is set: it then shows MeshLab's parameter dialog).
+bool InteractiveSession();
+
+/// The parameters to declare to MeshLab now: none for a filter with its own dialog in the GUI.
+const std::vector<ParamSpec>& DeclaredParams(const FilterSpec& filter);
+
+/// MeshLab's RichParameterList of `params`, in their order (same calls on both interfaces).
+void AddRichParameters(const std::vector<ParamSpec>& params, RichParameterList& list);
+
+/// The values of `filter`'s parameters in `list`; empty when MeshLab was given none (the
+/// filter's own dialog asks). Throws FilterError when some but not all are there.
+ParamValues ReadRichParameters(const FilterSpec& filter, const RichParameterList& list);
+
+/// Runs `filter` on `mesh`. With empty `values` a filter with its own dialog opens it (GUI
+/// only); cancelling it leaves the mesh as it was and returns normally. Throws FilterError,
+/// the mesh unchanged.
+void RunFilter(const FilterSpec& filter, MeshModel& mesh, const ParamValues& values,
+               const FilterEnvironment& env);
+
+/// What the filters may change, as MeshModel::MM_* flags (MeshLab's post-conditions).
+int ChangedMeshParts();
+
+} // namespace plugin
+} // namespace curvature_inpaint
