@@ -16,6 +16,7 @@ packages=(
   xvfb xauth xdotool x11-apps
   python3
   slurm-wlm munge
+  debootstrap
 )
 
 as_root() {
@@ -31,22 +32,10 @@ done
 # (its own apt sources say which); the source entry is written once, beside them.
 srclist=/etc/apt/sources.list.d/curvature-inpaint-src.sources
 need_update=0
-bookworm_mirror() {
-  apt-get indextargets --format '$(REPO_URI) $(RELEASE) $(TARGET_OF)' 2>/dev/null |
-    awk '$2 == "bookworm" && $3 == "deb" { print $1; exit }'
-}
+# shellcheck source=debian-mirror.sh
+. "$root/scripts/debian-mirror.sh"
 if [ ! -f "$srclist" ]; then
-  mirror=$(bookworm_mirror)
-  if [ -z "$mirror" ]; then
-    # apt knows its sources' index targets only once it has fetched their lists.
-    echo "setup: apt-get update" >&2
-    as_root apt-get update -qq
-    mirror=$(bookworm_mirror)
-  fi
-  if [ -z "$mirror" ]; then
-    echo "setup: no bookworm entry in this machine's apt sources to take the source package from" >&2
-    exit 1
-  fi
+  mirror=$(debian_mirror)
   as_root tee "$srclist" >/dev/null <<SRC
 Types: deb-src
 URIs: $mirror

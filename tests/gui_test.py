@@ -3,83 +3,28 @@ find "Curvature Inpaint Hole Fill" with MeshLab's filter search (Ctrl+F), inpain
 product's dialog, apply, and check MeshLab's log. Screenshots go to <build>/screenshots/."""
 import os
 import re
-import struct
 import subprocess
 import time
 
-import pngs
 from support import BUILD, TempDirTest, make_meshlab_prefix
+from xsession import XSession, wait_text
 
 SCREENSHOTS = os.path.join(BUILD, "screenshots")
-
-
-def xwd_to_png(data):
-    """A PNG of an `xwd -root` dump (TrueColor, 24 or 32 bits per pixel)."""
-    (header_size, _, _, depth, width, height, _, byte_order, _, _, _, bits_per_pixel,
-     bytes_per_line, _, red_mask, green_mask, blue_mask, _, _, ncolors) = struct.unpack(">20I", data[:80])
-    offset = header_size + 12 * ncolors
-    step = bits_per_pixel // 8
-    order = "<" if byte_order == 0 else ">"
-    fmt = order + "I"
-
-    def shift(mask):
-        return (mask & -mask).bit_length() - 1
-
-    rs, gs, bs = shift(red_mask), shift(green_mask), shift(blue_mask)
-    rows = []
-    for y in range(height):
-        line = data[offset + y * bytes_per_line:offset + y * bytes_per_line + width * step]
-        row = bytearray()
-        for x in range(width):
-            chunk = line[x * step:x * step + step]
-            (p,) = struct.unpack(fmt, chunk if step == 4 else chunk + b"\0")
-            row += bytes(((p & red_mask) >> rs, (p & green_mask) >> gs, (p & blue_mask) >> bs))
-        rows.append(bytes(row))
-    return pngs.encode(width, height, rows=rows)
 
 
 class MeshLabGui(TempDirTest):
     def setUp(self):
         super().setUp()
         os.makedirs(SCREENSHOTS, exist_ok=True)
-        # Xvfb picks a free display and writes its number once it is ready.
-        read, write = os.pipe()
-        self.xvfb = subprocess.Popen(["Xvfb", "-displayfd", str(write), "-screen", "0", "1280x1000x24",
-                                      "-nolisten", "tcp"], pass_fds=(write,), stderr=subprocess.DEVNULL)
-        os.close(write)
-        with os.fdopen(read) as f:
-            self.display = ":" + f.readline().strip()
-        self.addCleanup(self.xvfb.kill)
-        self.env = dict(os.environ, DISPLAY=self.display, HOME=self.tmp,
-                        XDG_CONFIG_HOME=self.path("config"), LIBGL_ALWAYS_SOFTWARE="1")
-        self.env.pop("CURVATURE_INPAINT_NO_DIALOG", None)
-
-    def x(self, *args):
-        return subprocess.run(["xdotool", *args], env=self.env, capture_output=True, text=True)
-
-    def wait_window(self, pattern, seconds):
-        """The id of the first window whose name matches `pattern`, or None after `seconds`."""
-        end = time.monotonic() + seconds
-        while time.monotonic() < end:
-            r = self.x("search", "--name", pattern)
-            if r.returncode == 0 and r.stdout.split():
-                return r.stdout.split()[0]
-            time.sleep(0.5)
-        return None
-
-    def wait_log(self, log, text, seconds):
-        end = time.monotonic() + seconds
-        while time.monotonic() < end:
-            with open(log, errors="replace") as f:
-                if text in f.read():
-                    return True
-            time.sleep(0.5)
-        return False
+        self.session = XSession(self.tmp)
+        self.addCleanup(self.session.close)
+        self.env = self.session.env
+        self.x = self.session.x
+        self.wait_window = self.session.wait_window
+        self.wait_log = wait_text
 
     def screenshot(self, name):
-        data = subprocess.run(["xwd", "-root", "-silent"], env=self.env, capture_output=True, check=True).stdout
-        with open(os.path.join(SCREENSHOTS, name), "wb") as f:
-            f.write(xwd_to_png(data))
+        self.session.screenshot(os.path.join(SCREENSHOTS, name))
 
     def test_dialog_previews_the_variations_and_apply_fills_the_hole(self):
         mesh = self.punched("igea_190k.ply", 21537, 0.05)

@@ -77,6 +77,8 @@ inline std::vector<double> ApssMeanCurvature(const std::vector<Eigen::Vector3d>&
                                              const std::vector<Eigen::Vector3d>& normals,
                                              const std::vector<int>& query,
                                              const ApssParams& params = {}) {
+  std::vector<double> h(query.size(), std::numeric_limits<double>::quiet_NaN());
+  if (points.size() < 2) return h; // MlsSurface reads the stride off the first two points
   detail::ApssMesh m;
   vcg::tri::Allocator<detail::ApssMesh>::AddVertices(m, points.size());
   for (size_t i = 0; i < points.size(); ++i) {
@@ -85,11 +87,14 @@ inline std::vector<double> ApssMeanCurvature(const std::vector<Eigen::Vector3d>&
         vcg::Point3f(float(normals[i].x()), float(normals[i].y()), float(normals[i].z()));
   }
   vcg::tri::UpdateBounding<detail::ApssMesh>::Box(m);
+#if CURVATURE_INPAINT_MLS_RADIUS_ATTRIBUTE
+  // MeshLab 2021.05 and later: the radii are an attribute the surface expects to find.
+  GaelMls::computeVertexRadius(m);
+#endif
   detail::Apss<detail::ApssMesh> apss(m);
   apss.setFilterScale(params.filter_scale);
   apss.setMaxProjectionIters(params.max_projection_iterations);
   apss.setProjectionAccuracy(params.projection_accuracy);
-  std::vector<double> h(query.size(), std::numeric_limits<double>::quiet_NaN());
   for (size_t i = 0; i < query.size(); ++i) {
     int error = GaelMls::MLS_OK;
     const float c = apss.approxMeanCurvature(m.vert[query[i]].cP(), &error);

@@ -18,6 +18,15 @@ namespace curvature_inpaint {
 namespace plugin {
 namespace {
 
+// After the coordinates changed; MeshModel's method was renamed in 2021.05.
+void UpdateBoxAndNormals(MeshModel& mm) {
+#if CURVATURE_INPAINT_MESHLAB_FILTER_PLUGIN
+  mm.updateBoxAndNormals();
+#else
+  mm.UpdateBoxAndNormals();
+#endif
+}
+
 void ReadDeformationParams(const ParamValues& v, HoleFillParams& p) {
   p.mode = v.Enum("Mode") == 1 ? "paper" : "direct";
   p.paper.similitude = v.Float("Similitude");
@@ -33,7 +42,7 @@ void RunHoleFill(MeshModel& mm, const HoleFillParams& p, const FilterEnvironment
     throw FilterError(std::string("Curvature Inpaint Hole Fill: ") + e.what() +
                       ". The mesh was not changed.");
   }
-  mm.UpdateBoxAndNormals();
+  UpdateBoxAndNormals(mm);
 }
 
 void RunCoarseHoleFill(MeshModel& mm, const ParamValues& v, const FilterEnvironment& env) {
@@ -51,7 +60,7 @@ void RunCoarseHoleFill(MeshModel& mm, const ParamValues& v, const FilterEnvironm
   } catch (const std::exception& e) {
     throw FilterError(std::string("Coarse Hole Fill: ") + e.what() + ". The mesh was not changed.");
   }
-  mm.UpdateBoxAndNormals();
+  UpdateBoxAndNormals(mm);
 }
 
 void RunCurvatureImages(MeshModel& mm, const ParamValues& v, const FilterEnvironment& env) {
@@ -78,7 +87,7 @@ void RunCurvatureImages(MeshModel& mm, const ParamValues& v, const FilterEnviron
     throw FilterError(std::string("Curvature Images: ") + e.what() + ".");
   }
   mm.updateDataMask(MeshModel::MM_VERTCOLOR);
-  mm.UpdateBoxAndNormals();
+  UpdateBoxAndNormals(mm);
 }
 
 void RunHoleFillFromParams(MeshModel& mm, const ParamValues& v, const FilterEnvironment& env) {

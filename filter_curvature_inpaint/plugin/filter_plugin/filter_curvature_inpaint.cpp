@@ -9,7 +9,7 @@ using curvature_inpaint::plugin::Filters;
 
 namespace {
 
-const curvature_inpaint::plugin::FilterSpec& Spec(ActionIDType id) {
+const curvature_inpaint::plugin::FilterSpec& Spec(FilterPlugin::ActionIDType id) {
   return curvature_inpaint::plugin::Filter(FilterId(id));
 }
 

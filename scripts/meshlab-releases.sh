@@ -1,0 +1,22 @@
+# Sourced by the scripts that build for the newer MeshLab releases: which Debian suite packages
+# each one, and where its root, its source and its build go.
+MESHLAB_RELEASES=(2022.02 2025.07)
+
+meshlab_suite() {
+  case $1 in
+  2022.02) echo trixie ;;
+  2025.07) echo sid ;;
+  *)
+    echo "unknown MeshLab release $1 (known: ${MESHLAB_RELEASES[*]})" >&2
+    return 1
+    ;;
+  esac
+}
+
+# The roots are big (1.6 GB each) and made once per machine: CURVATURE_INPAINT_ROOTS may put
+# them outside the checkout; by default they are in its ignored roots/.
+meshlab_root_dir() {
+  local suite
+  suite=$(meshlab_suite "$1") || return 1
+  echo "${CURVATURE_INPAINT_ROOTS:-$root/roots}/$suite"
+}
