@@ -14,7 +14,8 @@ meshlab_suite() {
 }
 
 # The roots are big (1.6 GB each) and made once per machine: CURVATURE_INPAINT_ROOTS may put
-# them outside the checkout; by default they are in its ignored roots/.
+# them outside the checkout; by default they are in its ignored roots/ (the sourcing script
+# sets $root to the checkout).
 meshlab_root_dir() {
   local suite
   suite=$(meshlab_suite "$1") || return 1

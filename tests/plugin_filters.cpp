@@ -21,20 +21,7 @@ using Interface = MeshFilterInterface;
 #endif
 
 std::string Json(const QString& text) {
-  std::string out = "\"";
-  for (const char c : text.toStdString()) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
-      out += escaped;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
+  return curvature_inpaint::plugin::JsonQuoted(text.toStdString());
 }
 
 std::string Categories(int c) {

@@ -238,6 +238,25 @@ void RunFilter(const FilterSpec& filter, MeshModel& mesh, const ParamValues& val
   }
 }
 
+void RunFilter(const FilterSpec& filter, MeshDocument& document, const RichParameterList& list,
+               const FilterEnvironment& env) {
+  if (document.mm() == nullptr) throw FilterError("There is no mesh to fill.");
+  RunFilter(filter, *document.mm(), ReadRichParameters(filter, list), env);
+}
+
+int MeshLabFilterClass(const FilterSpec& filter) {
+#if CURVATURE_INPAINT_MESHLAB_FILTER_PLUGIN
+  using Interface = FilterPlugin;
+#else
+  using Interface = MeshFilterInterface;
+#endif
+  int c = 0;
+  if (filter.categories & kRemeshing) c |= Interface::Remeshing;
+  if (filter.categories & kCleaning) c |= Interface::Cleaning;
+  if (filter.categories & kVertexColoring) c |= Interface::VertexColoring;
+  return c;
+}
+
 int ChangedMeshParts() {
   return MeshModel::MM_VERTNUMBER | MeshModel::MM_FACENUMBER | MeshModel::MM_VERTCOORD |
          MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL | MeshModel::MM_FACEFLAGSELECT |

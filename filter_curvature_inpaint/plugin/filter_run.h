@@ -12,6 +12,7 @@
 #include <cstring> // wrap/callback.h uses strcpy without including it
 #include <wrap/callback.h>
 
+class MeshDocument;
 class MeshModel;
 class RichParameterList;
 
@@ -49,6 +50,14 @@ ParamValues ReadRichParameters(const FilterSpec& filter, const RichParameterList
 /// the mesh unchanged.
 void RunFilter(const FilterSpec& filter, MeshModel& mesh, const ParamValues& values,
                const FilterEnvironment& env);
+
+/// RunFilter on the document's current mesh with the values in MeshLab's `list`: what both
+/// adapters' applyFilter does. Throws FilterError when there is no mesh.
+void RunFilter(const FilterSpec& filter, MeshDocument& document, const RichParameterList& list,
+               const FilterEnvironment& env);
+
+/// MeshLab's filter class flags (its menus) of `filter`, as the interface built against names them.
+int MeshLabFilterClass(const FilterSpec& filter);
 
 /// What the filters may change, as MeshModel::MM_* flags (MeshLab's post-conditions).
 int ChangedMeshParts();

@@ -231,23 +231,6 @@ FilterSpec DeformToImage() {
   return f;
 }
 
-std::string JsonString(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
-      out += escaped;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
-
 const char* TypeName(ParamType type) {
   switch (type) {
   case ParamType::kBool:
@@ -277,12 +260,29 @@ std::string DefaultJson(const ParamSpec& p) {
     return number;
   }
   case ParamType::kString:
-    return JsonString(p.value.s);
+    return JsonQuoted(p.value.s);
   }
   return "null";
 }
 
 } // namespace
+
+std::string JsonQuoted(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
+      out += escaped;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
 
 const std::vector<FilterSpec>& Filters() {
   static const std::vector<FilterSpec> filters{CoarseHoleFill(), CurvatureImages(), HoleFill(),
@@ -311,19 +311,19 @@ std::string FiltersJson() {
         {kRemeshing, "Remeshing"}, {kCleaning, "Cleaning"}, {kVertexColoring, "VertexColoring"}};
     for (const auto& n : names)
       if (f.categories & n.first)
-        categories += std::string(categories.empty() ? "" : ",") + JsonString(n.second);
-    out += "\n {\"name\": " + JsonString(f.name) +
-           ", \"python_name\": " + JsonString(f.python_name) + ", \"info\": " + JsonString(f.info) +
+        categories += std::string(categories.empty() ? "" : ",") + JsonQuoted(n.second);
+    out += "\n {\"name\": " + JsonQuoted(f.name) +
+           ", \"python_name\": " + JsonQuoted(f.python_name) + ", \"info\": " + JsonQuoted(f.info) +
            ", \"categories\": [" + categories +
            "], \"own_dialog\": " + (f.own_dialog ? "true" : "false") + ", \"params\": [";
     for (size_t k = 0; k < f.params.size(); ++k) {
       const ParamSpec& p = f.params[k];
       std::string choices;
       for (const std::string& c : p.choices)
-        choices += std::string(choices.empty() ? "" : ", ") + JsonString(c);
+        choices += std::string(choices.empty() ? "" : ", ") + JsonQuoted(c);
       out += std::string(k ? "," : "") + "\n  {\"type\": \"" + TypeName(p.type) +
-             "\", \"name\": " + JsonString(p.name) + ", \"label\": " + JsonString(p.label) +
-             ", \"help\": " + JsonString(p.help) + ", \"default\": " + DefaultJson(p) +
+             "\", \"name\": " + JsonQuoted(p.name) + ", \"label\": " + JsonQuoted(p.label) +
+             ", \"help\": " + JsonQuoted(p.help) + ", \"default\": " + DefaultJson(p) +
              ", \"choices\": [" + choices + "]}";
     }
     out += "]}";

@@ -78,6 +78,9 @@ private:
 /// The defaults of a filter's parameters, as MeshLab's dialog would start with them.
 ParamValues Defaults(const FilterSpec& filter);
 
+/// `text` as a JSON string literal, quotes included.
+std::string JsonQuoted(const std::string& text);
+
 /// The table as JSON (filters with name, python_name, info, categories, own_dialog and the
 /// parameters with type, name, label, help, default and choices): what the adapters must list.
 std::string FiltersJson();

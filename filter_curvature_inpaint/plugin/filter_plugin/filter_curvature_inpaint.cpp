@@ -37,13 +37,7 @@ QString FilterCurvatureInpaintPlugin::filterInfo(ActionIDType filter) const {
 }
 
 FilterPlugin::FilterClass FilterCurvatureInpaintPlugin::getClass(const QAction* a) const {
-  using namespace curvature_inpaint::plugin;
-  const unsigned categories = Spec(ID(a)).categories;
-  int c = 0;
-  if (categories & kRemeshing) c |= FilterPlugin::Remeshing;
-  if (categories & kCleaning) c |= FilterPlugin::Cleaning;
-  if (categories & kVertexColoring) c |= FilterPlugin::VertexColoring;
-  return FilterClass(c);
+  return FilterClass(curvature_inpaint::plugin::MeshLabFilterClass(Spec(ID(a))));
 }
 
 int FilterCurvatureInpaintPlugin::getPreConditions(const QAction*) const {
@@ -72,9 +66,7 @@ FilterCurvatureInpaintPlugin::applyFilter(const QAction* action, const RichParam
   env.log = [this](const std::string& line) { this->log(line); };
   env.warn = [this](const std::string& line) { this->log(GLLogStream::WARNING, line); };
   try {
-    if (md.mm() == nullptr) throw FilterError("There is no mesh to fill.");
-    const FilterSpec& filter = Spec(ID(action));
-    RunFilter(filter, *md.mm(), ReadRichParameters(filter, par), env);
+    RunFilter(Spec(ID(action)), md, par, env);
   } catch (const std::exception& e) {
     env.warn(e.what());
     throw MLException(QString::fromStdString(e.what()));

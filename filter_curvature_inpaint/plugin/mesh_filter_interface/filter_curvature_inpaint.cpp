@@ -31,13 +31,7 @@ QString FilterCurvatureInpaintPlugin::filterInfo(FilterIDType filter) const {
 }
 
 MeshFilterInterface::FilterClass FilterCurvatureInpaintPlugin::getClass(QAction* a) {
-  using namespace curvature_inpaint::plugin;
-  const unsigned categories = Spec(ID(a)).categories;
-  int c = 0;
-  if (categories & kRemeshing) c |= MeshFilterInterface::Remeshing;
-  if (categories & kCleaning) c |= MeshFilterInterface::Cleaning;
-  if (categories & kVertexColoring) c |= MeshFilterInterface::VertexColoring;
-  return FilterClass(c);
+  return FilterClass(curvature_inpaint::plugin::MeshLabFilterClass(Spec(ID(a))));
 }
 
 int FilterCurvatureInpaintPlugin::getRequirements(QAction*) {
@@ -68,9 +62,7 @@ bool FilterCurvatureInpaintPlugin::applyFilter(QAction* action, MeshDocument& md
   // meshlabserver prints only the log, not errorMessage: failures go to both.
   env.warn = [this](const std::string& line) { Log(GLLogStream::WARNING, line); };
   try {
-    if (md.mm() == nullptr) throw FilterError("There is no mesh to fill.");
-    const FilterSpec& filter = Spec(ID(action));
-    RunFilter(filter, *md.mm(), ReadRichParameters(filter, par), env);
+    RunFilter(Spec(ID(action)), md, par, env);
   } catch (const std::exception& e) {
     errorMessage = QString::fromStdString(e.what());
     env.warn(e.what());
