@@ -84,6 +84,12 @@ class CurrentMeshLab(TempDirTest):
         self.assertRegex(log, r"validation 1: on \d fake holes, .*; chose ")
         self.assert_filled_keeping_the_scan(scan, out)
 
+    def test_cancelling_the_products_dialog_leaves_the_mesh_as_it_was(self):
+        scan = self.punched("igea_190k.ply", 21537, 0.05)
+        out, log = self.gui("hole-fill-cancelled", scan)
+        self.assertEqual(info(out)["holes"], 1)
+        self.assertEqual(read_binary_ply_xyz(out), read_binary_ply_xyz(scan))
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -3,7 +3,7 @@ of its release: installs the plugin in MeshLab's per-user plugin folder, opens a
 of the product's filters through its dialog, exports the mesh and prints MeshLab's log. Exits 1
 with the reason (and a screenshot) when MeshLab refuses the plugin or a dialog never appears.
 
-usage: meshlab_gui_driver.py coarse-hole-fill|hole-fill RELEASE PLUGIN MESH OUT SCREENSHOTS"""
+usage: meshlab_gui_driver.py coarse-hole-fill|hole-fill|hole-fill-cancelled RELEASE PLUGIN MESH OUT SCREENSHOTS"""
 import os
 import shutil
 import subprocess
@@ -91,6 +91,19 @@ def hole_fill(session, main, log, shots):
         raise Failure(name + " was not applied")
 
 
+def hole_fill_cancelled(session, main, log, shots):
+    name = "Curvature Inpaint Hole Fill"
+    start_filter(session, main, name)
+    dialog = session.wait_window("^" + name, 60)
+    if dialog is None:
+        raise Failure("the product's dialog did not appear")
+    time.sleep(1)
+    session.focus(dialog)
+    session.x("key", "Escape")  # Cancel
+    if not wait_text(log, "cancelled; the mesh was not changed", 60):
+        raise Failure("the dialog was not cancelled")
+
+
 def export_mesh(session, main, log, out):
     session.focus(main)
     session.x("key", "ctrl+shift+e")  # File > Export Mesh As...
@@ -134,7 +147,9 @@ def main():
                 raise Failure("MeshLab did not open " + mesh)
             time.sleep(0.5)
         time.sleep(1)
-        {"coarse-hole-fill": coarse_hole_fill, "hole-fill": hole_fill}[action](
+        actions = {"coarse-hole-fill": coarse_hole_fill, "hole-fill": hole_fill,
+                   "hole-fill-cancelled": hole_fill_cancelled}
+        actions[action](
             session, main_window, log, shots)
         export_mesh(session, main_window, log, out)
         status = 0
