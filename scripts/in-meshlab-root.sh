@@ -11,7 +11,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 release=$1
 shift
 dir=$(meshlab_root_dir "$release")
-if [ ! -f "$dir/.curvature-inpaint-root" ]; then
+if [ ! -f "$dir/.debootstrap-complete" ]; then
   echo "in-meshlab-root: no Debian root for MeshLab $release: run scripts/setup-meshlab-roots.sh" >&2
   exit 1
 fi

@@ -53,8 +53,6 @@ deb $mirror $suite main
 deb-src $mirror $suite main
 SOURCES
     printf 'Acquire::Check-Valid-Until "false";\n' >"$dir/etc/apt/apt.conf.d/50curvature-inpaint"
-    # The helper refuses a root without the stamp; a first run works under a provisional one.
-    echo "installing" >"$stamp"
     echo "setup: installing meshlab and the build dependencies in $suite" >&2
     run_quiet "$root/scripts/in-meshlab-root.sh" "$release" apt-get "${apt_options[@]}" update -qq
     run_quiet "$root/scripts/in-meshlab-root.sh" "$release" env DEBIAN_FRONTEND=noninteractive \

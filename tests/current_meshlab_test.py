@@ -10,8 +10,7 @@ import shutil
 import tempfile
 import unittest
 
-from support import (BUILD, SHARED_MESHES, SOURCE, TOOL, TempDirTest, info,
-                     read_binary_ply_xyz, run)
+from support import BUILD, SOURCE, TempDirTest, info, read_binary_ply_xyz, run
 
 RELEASE = os.environ.get("MESHLAB_RELEASE", "")
 RELEASE_BUILD = os.path.join(SOURCE, f"build-{RELEASE}")

@@ -29,17 +29,9 @@ def install_plugin(home, release, plugin):
 
 
 def applied(log, name, seconds):
-    """Whether MeshLab logs that it applied the filter ("Applied filter: NAME" since 2023,
-    "Applied filter NAME" before) within `seconds`."""
-    end = time.monotonic() + seconds
-    while True:
-        with open(log, errors="replace") as f:
-            text = f.read()
-        if "Applied filter: " + name in text or "Applied filter " + name in text:
-            return True
-        if time.monotonic() >= end:
-            return False
-        time.sleep(0.5)
+    """Whether MeshLab logs that it applied the filter ("Applied filter: NAME" in 2025.07,
+    "Applied filter NAME" in 2022.02) within `seconds`."""
+    return wait_text(log, ("Applied filter: " + name, "Applied filter " + name), seconds)
 
 
 def start_filter(session, main, name):
@@ -68,14 +60,22 @@ def coarse_hole_fill(session, main, log, shots):
         raise Failure(name + " was not applied")
 
 
-def hole_fill(session, main, log, shots):
-    name = "Curvature Inpaint Hole Fill"
-    start_filter(session, main, name)
-    dialog = session.wait_window("^" + name, 60)
+HOLE_FILL = "Curvature Inpaint Hole Fill"
+
+
+def open_product_dialog(session, main):
+    """The product's own dialog, focused; MeshLab shows none of its own for this filter."""
+    start_filter(session, main, HOLE_FILL)
+    dialog = session.wait_window("^" + HOLE_FILL, 60)
     if dialog is None:
         raise Failure("the product's dialog did not appear")
     time.sleep(1)
     session.focus(dialog)
+    return dialog
+
+
+def hole_fill(session, main, log, shots):
+    dialog = open_product_dialog(session, main)
     session.x("key", "alt+i")  # Inpaint
     ready = session.wait_window("holes ready", 180)
     if ready is None:
@@ -83,22 +83,16 @@ def hole_fill(session, main, log, shots):
         raise Failure("the dialog showed no variations")
     time.sleep(1)
     session.screenshot(os.path.join(shots, "hole_fill_dialog.png"), ready)
-    if applied(log, name, 0):
+    if applied(log, HOLE_FILL, 0):
         raise Failure("the mesh changed before Apply")
     session.focus(ready)
     session.x("key", "alt+a")  # Apply
-    if not applied(log, name, 120):
-        raise Failure(name + " was not applied")
+    if not applied(log, HOLE_FILL, 120):
+        raise Failure(HOLE_FILL + " was not applied")
 
 
 def hole_fill_cancelled(session, main, log, shots):
-    name = "Curvature Inpaint Hole Fill"
-    start_filter(session, main, name)
-    dialog = session.wait_window("^" + name, 60)
-    if dialog is None:
-        raise Failure("the product's dialog did not appear")
-    time.sleep(1)
-    session.focus(dialog)
+    open_product_dialog(session, main)
     session.x("key", "Escape")  # Cancel
     if not wait_text(log, "cancelled; the mesh was not changed", 60):
         raise Failure("the dialog was not cancelled")
@@ -149,8 +143,7 @@ def main():
         time.sleep(1)
         actions = {"coarse-hole-fill": coarse_hole_fill, "hole-fill": hole_fill,
                    "hole-fill-cancelled": hole_fill_cancelled}
-        actions[action](
-            session, main_window, log, shots)
+        actions[action](session, main_window, log, shots)
         export_mesh(session, main_window, log, out)
         status = 0
     except Failure as e:

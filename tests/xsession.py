@@ -90,12 +90,15 @@ class XSession:
 
 
 def wait_text(path, text, seconds):
-    """Whether `text` appears in the file at `path` within `seconds`."""
+    """Whether `text` (or one of a tuple of texts) appears in the file at `path` within
+    `seconds`."""
+    texts = (text,) if isinstance(text, str) else text
     end = time.monotonic() + seconds
     while True:
         with open(path, errors="replace") as f:
-            if text in f.read():
-                return True
+            content = f.read()
+        if any(t in content for t in texts):
+            return True
         if time.monotonic() >= end:
             return False
         time.sleep(0.5)

@@ -18,6 +18,20 @@ namespace curvature_inpaint {
 namespace plugin {
 namespace {
 
+/// Whether the filter runs in the MeshLab GUI, where the filters with their own dialog open it.
+/// meshlabserver, PyMeshLab and scripts never block on one (nor does the GUI when
+/// CURVATURE_INPAINT_NO_DIALOG is set: it then shows MeshLab's parameter dialog).
+bool InteractiveSession() {
+  return qobject_cast<QApplication*>(QCoreApplication::instance()) != nullptr &&
+         QCoreApplication::applicationName().startsWith("MeshLab") &&
+         std::getenv("CURVATURE_INPAINT_NO_DIALOG") == nullptr;
+}
+
+/// A text parameter without the blanks a dialog field easily gets around a path or address.
+std::string Trimmed(const ParamValues& v, const char* name) {
+  return QString::fromStdString(v.String(name)).trimmed().toStdString();
+}
+
 // After the coordinates changed; MeshModel's method was renamed in 2021.05.
 void UpdateBoxAndNormals(MeshModel& mm) {
 #if CURVATURE_INPAINT_MESHLAB_FILTER_PLUGIN
@@ -69,8 +83,7 @@ void RunCurvatureImages(MeshModel& mm, const ParamValues& v, const FilterEnviron
   params.segmentation.context = v.Float("Context");
   params.apss.filter_scale = v.Float("FilterScale");
   params.image_size = v.Int("ImageSize");
-  const std::string folder =
-      QString::fromStdString(v.String("OutputFolder")).trimmed().toStdString();
+  const std::string folder = Trimmed(v, "OutputFolder");
   // Refuse an unusable folder before the mesh is touched.
   const QString qfolder = QString::fromStdString(folder);
   if (!folder.empty() && (!QDir().mkpath(qfolder) || !QFileInfo(qfolder).isWritable()))
@@ -95,8 +108,8 @@ void RunHoleFillFromParams(MeshModel& mm, const ParamValues& v, const FilterEnvi
   HoleFillParams p;
   p.inpaint.backend =
       backends.at(std::max(0, std::min(int(backends.size()) - 1, v.Enum("Backend"))));
-  p.inpaint.url = QString::fromStdString(v.String("ServerUrl")).trimmed().toStdString();
-  p.inpaint.model = QString::fromStdString(v.String("Model")).trimmed().toStdString();
+  p.inpaint.url = Trimmed(v, "ServerUrl");
+  p.inpaint.model = Trimmed(v, "Model");
   p.inpaint.prompt = v.String("Prompt");
   p.inpaint.variations = v.Int("Variations");
   p.pick = v.Int("Variation");
@@ -110,7 +123,7 @@ void RunHoleFillFromParams(MeshModel& mm, const ParamValues& v, const FilterEnvi
   p.images.coarse.keep_longest_open = v.Bool("KeepLongestOpen");
   p.images.coarse.selected_only = v.Bool("Selected");
   p.images.image_size = v.Int("ImageSize");
-  p.images_dir = QString::fromStdString(v.String("OutputFolder")).trimmed().toStdString();
+  p.images_dir = Trimmed(v, "OutputFolder");
   RunHoleFill(mm, p, env);
 }
 
@@ -132,7 +145,7 @@ void RunHoleFillDialog(MeshModel& mm, const FilterEnvironment& env) {
 
 void RunDeformToImage(MeshModel& mm, const ParamValues& v, const FilterEnvironment& env) {
   HoleFillParams p;
-  p.inpainted_dir = QString::fromStdString(v.String("Folder")).trimmed().toStdString();
+  p.inpainted_dir = Trimmed(v, "Folder");
   if (p.inpainted_dir.empty())
     throw FilterError("Deform to Curvature Image: choose the folder of the images.");
   ReadDeformationParams(v, p);
@@ -145,19 +158,9 @@ void RunDeformToImage(MeshModel& mm, const ParamValues& v, const FilterEnvironme
 
 } // namespace
 
-bool InteractiveSession() {
-  return qobject_cast<QApplication*>(QCoreApplication::instance()) != nullptr &&
-         QCoreApplication::applicationName().startsWith("MeshLab") &&
-         std::getenv("CURVATURE_INPAINT_NO_DIALOG") == nullptr;
-}
-
-const std::vector<ParamSpec>& DeclaredParams(const FilterSpec& filter) {
-  static const std::vector<ParamSpec> none;
-  return filter.own_dialog && InteractiveSession() ? none : filter.params;
-}
-
-void AddRichParameters(const std::vector<ParamSpec>& params, RichParameterList& list) {
-  for (const ParamSpec& p : params) {
+void AddRichParameters(const FilterSpec& filter, RichParameterList& list) {
+  if (filter.own_dialog && InteractiveSession()) return;
+  for (const ParamSpec& p : filter.params) {
     const QString name = QString::fromStdString(p.name);
     const QString label = QString::fromStdString(p.label);
     const QString help = QString::fromStdString(p.help);

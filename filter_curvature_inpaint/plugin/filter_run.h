@@ -30,16 +30,9 @@ struct FilterEnvironment {
   std::function<void(const std::string&)> warn; ///< MeshLab's log, warning level
 };
 
-/// Whether the filter runs in the MeshLab GUI, where the filters with their own dialog open it.
-/// meshlabserver, PyMeshLab and scripts never block on one (nor does the GUI when
-/// CURVATURE_INPAINT_NO_DIALOG is set: it then shows MeshLab's parameter dialog).
-bool InteractiveSession();
-
-/// The parameters to declare to MeshLab now: none for a filter with its own dialog in the GUI.
-const std::vector<ParamSpec>& DeclaredParams(const FilterSpec& filter);
-
-/// MeshLab's RichParameterList of `params`, in their order (same calls on both interfaces).
-void AddRichParameters(const std::vector<ParamSpec>& params, RichParameterList& list);
+/// Declares `filter`'s parameters to MeshLab, in the table's order (the same calls on both
+/// interfaces): none in the GUI for a filter with its own dialog, so MeshLab calls it at once.
+void AddRichParameters(const FilterSpec& filter, RichParameterList& list);
 
 /// The values of `filter`'s parameters in `list`; empty when MeshLab was given none (the
 /// filter's own dialog asks). Throws FilterError when some but not all are there.

@@ -296,12 +296,6 @@ const FilterSpec& Filter(FilterId id) {
   throw std::out_of_range("no such filter");
 }
 
-ParamValues Defaults(const FilterSpec& filter) {
-  ParamValues values;
-  for (const ParamSpec& p : filter.params) values.Set(p.name, p.value);
-  return values;
-}
-
 std::string FiltersJson() {
   std::string out = "[";
   for (const FilterSpec& f : Filters()) {

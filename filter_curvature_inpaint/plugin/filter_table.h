@@ -75,9 +75,6 @@ private:
   std::map<std::string, ParamValue> values_;
 };
 
-/// The defaults of a filter's parameters, as MeshLab's dialog would start with them.
-ParamValues Defaults(const FilterSpec& filter);
-
 /// `text` as a JSON string literal, quotes included.
 std::string JsonQuoted(const std::string& text);
 

@@ -51,9 +51,7 @@ int FilterCurvatureInpaintPlugin::postCondition(const QAction*) const {
 RichParameterList FilterCurvatureInpaintPlugin::initParameterList(const QAction* action,
                                                                   const MeshModel&) {
   RichParameterList par;
-  const auto& filter = Spec(ID(action));
-  curvature_inpaint::plugin::AddRichParameters(curvature_inpaint::plugin::DeclaredParams(filter),
-                                               par);
+  curvature_inpaint::plugin::AddRichParameters(Spec(ID(action)), par);
   return par;
 }
 

@@ -48,9 +48,7 @@ int FilterCurvatureInpaintPlugin::postCondition(QAction*) const {
 
 void FilterCurvatureInpaintPlugin::initParameterSet(QAction* action, MeshModel&,
                                                     RichParameterList& par) {
-  const auto& filter = Spec(ID(action));
-  curvature_inpaint::plugin::AddRichParameters(curvature_inpaint::plugin::DeclaredParams(filter),
-                                               par);
+  curvature_inpaint::plugin::AddRichParameters(Spec(ID(action)), par);
 }
 
 bool FilterCurvatureInpaintPlugin::applyFilter(QAction* action, MeshDocument& md,
