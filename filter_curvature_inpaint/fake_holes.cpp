@@ -153,15 +153,36 @@ std::vector<std::unique_ptr<FakeHole>> CutFakeHoles(const CMeshO& m, const vcg_e
   }
   std::mt19937 rng(params.seed * 1000003u + uint32_t(hole));
   std::shuffle(places.begin(), places.end(), rng);
-  int attempts = 0;
-  for (int v : places) {
-    if (int(fakes.size()) == params.count || attempts == params.max_attempts) break;
+  // Each mirror place as the scan vertex nearest to it, if one lies within a hole radius
+  // (elsewhere the mirror image of the hole is not on the known surface).
+  std::vector<int> mirror_vertices;
+  for (const Eigen::Vector3d& q : params.mirror_places) {
+    int nearest = -1;
+    double best = r * r;
+    for (size_t v = 0; v < scan_vertices; ++v) {
+      if (m.vert[v].IsD()) continue;
+      const double d2 = (ToEigen(m.vert[v].cP()) - q).squaredNorm();
+      if (d2 < best) best = d2, nearest = int(v);
+    }
+    if (nearest >= 0) mirror_vertices.push_back(nearest);
+  }
+  int attempts = 0, near = 0;
+  std::vector<std::pair<int, bool>> tries; // (vertex, at a mirror place)
+  for (int v : places) tries.emplace_back(v, false);
+  for (int v : mirror_vertices) tries.emplace_back(v, true);
+  for (const auto& place : tries) {
+    const int v = place.first;
+    const bool at_mirror = place.second;
+    if (!at_mirror && (near == params.count || attempts == params.max_attempts)) continue;
     const Eigen::Vector3d p = ToEigen(m.vert[v].cP());
     bool apart = true;
     for (const auto& b : holes) apart = apart && (p - b.centre).norm() > piece + b.radius;
-    for (const auto& f : fakes) apart = apart && (p - f->centre).norm() > 2 * piece;
+    // The one at a mirror place may overlap those near the hole (each is filled on its own
+    // copy of its piece), so that it takes no room from them.
+    for (const auto& f : fakes)
+      if (f->at_mirror_place == at_mirror) apart = apart && (p - f->centre).norm() > 2 * piece;
     if (!apart) continue;
-    ++attempts;
+    if (!at_mirror) ++attempts;
     // The piece: the scan faces with every corner within `piece` of p, grown from p.
     std::vector<int> faces, stack{v};
     std::unordered_map<int, int> local;
@@ -230,12 +251,17 @@ std::vector<std::unique_ptr<FakeHole>> CutFakeHoles(const CMeshO& m, const vcg_e
         fake.cut_vertices.push_back(int(i));
     fake.radius = r * box.scale;
     fake.centre = p;
+    fake.at_mirror_place = at_mirror;
+    near += !at_mirror;
     fakes.push_back(std::move(made));
   }
-  if (why && int(fakes.size()) < params.count)
-    *why = fakes.empty() ? "no room for fake holes of its size on the known surface near it"
-                         : "room for " + std::to_string(fakes.size()) + " fake hole" +
-                               (fakes.size() == 1 ? "" : "s") + " only";
+  // A fake hole at the mirror place cannot validate the mirror image (its own is the real
+  // hole): alone, it would judge the symmetry prior by the other candidates.
+  if (near == 0) fakes.clear();
+  if (why && near < params.count)
+    *why = near == 0 ? "no room for fake holes of its size on the known surface near it"
+                     : "room for " + std::to_string(near) + " fake hole" + (near == 1 ? "" : "s") +
+                           " near it only";
   return fakes;
 }
 

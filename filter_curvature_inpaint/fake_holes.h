@@ -27,6 +27,7 @@ struct FakeHole {
   std::vector<int> cut_vertices;                    ///< vertices of truth the hole removed
   double radius = 0;                                ///< of the hole, unit box of holed
   Eigen::Vector3d centre = Eigen::Vector3d::Zero(); ///< of the hole, the mesh's units
+  bool at_mirror_place = false;                     ///< cut where the real hole's mirror image lies
 };
 
 struct FakeHoleParams {
@@ -35,13 +36,20 @@ struct FakeHoleParams {
   double farthest = 10;  ///< fake holes lie within this many hole radii of the real one
   int max_attempts = 48; ///< places tried per real hole
   uint32_t seed = 1;
+  /// The real hole's centre reflected in each of the object's mirror planes (the mesh's
+  /// units): where the surface there is known, one fake hole is cut there besides `count`
+  /// near the hole (none if there is no room near it). On a symmetric object the twin of the
+  /// missing surface is the fake hole most like it.
+  std::vector<Eigen::Vector3d> mirror_places;
 };
 
 /// Cuts up to `params.count` fake holes of the size of hole `hole` of `coarse` into the scan
-/// faces of `m` (after its coarse fill; `vf` its vertex-face adjacency). A fake hole and the
-/// piece around it never overlap a real hole (filled or not), another fake's piece, or the
-/// mesh's border; places are tried in an order fixed by the seed and the hole, so the result
-/// does not depend on threads. Fewer (or none) where there is no room: `why` says so.
+/// faces of `m` (after its coarse fill; `vf` its vertex-face adjacency), and one at each
+/// mirror place. A fake hole and the piece around it never overlap a real hole (filled or
+/// not), the mesh's border, or another near fake's piece (a mirror place's may overlap
+/// those). Places near it are tried in an order fixed by the seed and the hole (so the result
+/// does not depend on threads), then the mirror places. Fewer (or none) where there is no
+/// room: `why` says so.
 std::vector<std::unique_ptr<FakeHole>> CutFakeHoles(const CMeshO& m, const vcg_ext::VertexFaces& vf,
                                                     const vcg_ext::CoarseFillResult& coarse,
                                                     int hole, const FakeHoleParams& params,

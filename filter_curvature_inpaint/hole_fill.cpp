@@ -304,6 +304,15 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
   FakeHoleParams fp;
   fp.count = vp.fake_holes;
   fp.seed = params.inpaint.seed;
+  if (ctx.symmetry) {
+    const auto& loop = ctx.coarse->holes[size_t(hi.hole)].loop;
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (int v : loop) {
+      const auto& q = ctx.mesh->vert[size_t(v)].cP();
+      centre += Eigen::Vector3d(q[0], q[1], q[2]);
+    }
+    if (!loop.empty()) fp.mirror_places = MirrorPlaces(*ctx.symmetry, centre / double(loop.size()));
+  }
   std::string why;
   const auto fakes = CutFakeHoles(*ctx.mesh, *ctx.vf, *ctx.coarse, hi.hole, fp, &why);
   const size_t n = hv.candidates.size();
@@ -405,6 +414,10 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
   }
   const int used = int(trials.size());
   hv.fake_holes = used;
+  for (const Trial& t : trials) {
+    hv.mirror_fake_holes += t.fake->at_mirror_place;
+    hv.fake_hole_errors.push_back(t.errors);
+  }
   if (used == 0) {
     hv.candidates.clear();
     hv.validation_note = (why.empty() ? std::string("no fake hole near it could be filled") : why) +
@@ -597,6 +610,8 @@ void DeformHole(const HoleImage& hi, size_t k, const vcg_ext::CoarseFillResult& 
   report.validation_detail = hv.validation_detail;
   report.choice = hv.choice;
   report.fake_holes = hv.fake_holes;
+  report.mirror_fake_holes = hv.mirror_fake_holes;
+  report.fake_hole_errors = hv.fake_hole_errors;
   report.validation_note = hv.validation_note;
   report.symmetry_note = hv.symmetry_note;
   report.crease_note = hv.crease_note;
@@ -950,11 +965,12 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
 
 std::string DescribeValidation(const std::vector<std::string>& candidates,
                                const std::vector<double>& errors, int choice, int fake_holes,
-                               const std::string& note) {
+                               int mirror_fake_holes, const std::string& note) {
   if (candidates.empty()) return note.empty() ? "not validated" : note;
   std::ostringstream o;
-  o << "on " << fake_holes << " fake hole" << (fake_holes == 1 ? "" : "s")
-    << ", RMS in % of the hole's radius:";
+  o << "on " << fake_holes << " fake hole" << (fake_holes == 1 ? "" : "s");
+  if (mirror_fake_holes > 0) o << " (" << mirror_fake_holes << " at its mirror place)";
+  o << ", RMS in % of the hole's radius:";
   for (size_t c = 0; c < candidates.size() && c < errors.size(); ++c)
     o << (c ? ", " : " ") << candidates[c] << " "
       << QString::number(100 * errors[c], 'f', 2).toStdString();
@@ -973,7 +989,7 @@ std::vector<std::string> DescribeHoleFill(const HoleFillResult& result) {
     if (!r.candidates.empty() || !r.validation_note.empty())
       lines.push_back("validation " + std::to_string(k + 1) + ": " +
                       DescribeValidation(r.candidates, r.validation_errors, r.choice, r.fake_holes,
-                                         r.validation_note));
+                                         r.mirror_fake_holes, r.validation_note));
     if (!r.problem.empty()) {
       std::snprintf(buf, sizeof buf, "detail %zu: none: %s", k + 1, r.problem.c_str());
     } else {
@@ -1019,11 +1035,19 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
     for (size_t j = 0; j < r.kinds.size(); ++j) o << (j ? ", " : "") << '"' << r.kinds[j] << '"';
     o << "]";
     if (!r.candidates.empty()) {
-      o << ", \"validation\": {\"fake_holes\": " << r.fake_holes << ", \"candidates\": [";
+      o << ", \"validation\": {\"fake_holes\": " << r.fake_holes
+        << ", \"at_mirror_place\": " << r.mirror_fake_holes << ", \"candidates\": [";
       for (size_t c = 0; c < r.candidates.size(); ++c)
         o << (c ? ", " : "") << "{\"name\": \"" << r.candidates[c]
           << "\", \"error\": " << r.validation_errors[c]
           << ", \"detail_ratio\": " << r.validation_detail[c] << "}";
+      o << "], \"per_fake_hole\": [";
+      for (size_t f = 0; f < r.fake_hole_errors.size(); ++f) {
+        o << (f ? ", [" : "[");
+        for (size_t c = 0; c < r.fake_hole_errors[f].size(); ++c)
+          o << (c ? ", " : "") << r.fake_hole_errors[f][c];
+        o << "]";
+      }
       o << "], \"choice\": \"" << r.candidates[size_t(r.choice)] << "\"}";
     }
     o << ", \"pick\": " << r.pick;

@@ -88,6 +88,9 @@ struct HoleFillReport {
   std::vector<double> validation_detail;
   int choice = -1; ///< index into candidates
   int fake_holes = 0;
+  int mirror_fake_holes = 0; ///< of those, cut at the hole's mirror place
+  /// Per fake hole (those at the mirror place last): each candidate's RMS / radius there.
+  std::vector<std::vector<double>> fake_hole_errors;
   std::string validation_note;            ///< why there are fewer fake holes, or none
   std::string symmetry_note, crease_note; ///< why it has no such variation; empty if it has
   std::string problem;                    ///< why the hole kept its coarse fill; empty if none
@@ -113,7 +116,8 @@ struct HoleVariations {
   std::vector<std::string> candidates;
   std::vector<double> validation_errors, validation_detail;
   int choice = -1;
-  int fake_holes = 0;
+  int fake_holes = 0, mirror_fake_holes = 0;
+  std::vector<std::vector<double>> fake_hole_errors;
   std::string validation_note;
   std::string symmetry_note; ///< why the hole has no symmetry variation; empty if it has
   std::string crease_note;   ///< why the hole has no crease variation; empty if it has
@@ -171,7 +175,7 @@ double ScoreVariation(const QImage& variation, const QImage& mask);
 /// it was not validated.
 std::string DescribeValidation(const std::vector<std::string>& candidates,
                                const std::vector<double>& errors, int choice, int fake_holes,
-                               const std::string& note);
+                               int mirror_fake_holes, const std::string& note);
 
 std::vector<std::string> DescribeHoleFill(const HoleFillResult& result);
 

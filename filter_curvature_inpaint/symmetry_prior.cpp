@@ -46,6 +46,15 @@ std::unique_ptr<SymmetryPrior> DetectSymmetry(const CMeshO& m,
   return prior;
 }
 
+std::vector<Eigen::Vector3d> MirrorPlaces(const SymmetryPrior& prior,
+                                          const Eigen::Vector3d& centre) {
+  std::vector<Eigen::Vector3d> places;
+  const Eigen::Vector3d unit = (centre - prior.box.origin) * prior.box.scale;
+  for (const auto& plane : prior.planes)
+    places.push_back(plane.Reflect(unit) / prior.box.scale + prior.box.origin);
+  return places;
+}
+
 std::string DescribeSymmetry(const std::vector<vcg_ext::SymmetryPlane>& planes,
                              const vcg_ext::SymmetryPlane& best) {
   auto plane = [](const vcg_ext::SymmetryPlane& p) {

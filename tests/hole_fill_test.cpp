@@ -160,27 +160,32 @@ std::pair<Eigen::Vector3d, double> LoopBall(const CMeshO& m, const std::vector<i
   return {c, r};
 }
 
-TEST(FakeHoles, NeverOverlapARealHoleEachOtherOrTheBorder) {
-  // A wavy open sheet (its outer border is no hole) with two real holes.
-  CMeshO m;
+/// A wavy open sheet over [-3, 3]^2 (its outer border is no hole), mirror-symmetric across
+/// y = 0, with holes of radius 0.25 punched at the vertices nearest to `at` (x, y) and
+/// coarse-filled.
+vcg_ext::CoarseFillResult WavySheetWithHoles(CMeshO& m, const std::vector<Point3m>& at) {
   vcg::tri::Grid(m, 121, 121, 6.0f, 6.0f); // [0, 6]^2
   for (auto& v : m.vert) {
     v.P()[0] -= 3, v.P()[1] -= 3;
     v.P()[2] = 0.2f * std::sin(2 * v.P()[0]) * std::cos(1.5f * v.P()[1]);
   }
   vcg::tri::UpdateBounding<CMeshO>::Box(m);
-  for (const Point3m at : {Point3m(-0.5f, -0.5f, 0), Point3m(0.7f, 0.4f, 0)}) {
+  for (const Point3m& a : at) {
     Point3m on = m.vert[0].cP();
     for (const auto& v : m.vert)
-      if (std::hypot(v.cP()[0] - at[0], v.cP()[1] - at[1]) <
-          std::hypot(on[0] - at[0], on[1] - at[1]))
+      if (std::hypot(v.cP()[0] - a[0], v.cP()[1] - a[1]) < std::hypot(on[0] - a[0], on[1] - a[1]))
         on = v.cP();
     vcg_ext::PunchHole(m, on, Scalarm(0.25));
   }
   vcg::tri::UpdateBounding<CMeshO>::Box(m);
   vcg_ext::CoarseFillParams cp;
   cp.keep_longest_open = true;
-  const auto coarse = curvature_inpaint::CoarseFill(m, cp);
+  return curvature_inpaint::CoarseFill(m, cp);
+}
+
+TEST(FakeHoles, NeverOverlapARealHoleEachOtherOrTheBorder) {
+  CMeshO m;
+  const auto coarse = WavySheetWithHoles(m, {Point3m(-0.5f, -0.5f, 0), Point3m(0.7f, 0.4f, 0)});
   ASSERT_EQ(coarse.FilledCount(), 2);
   const vcg_ext::VertexFaces vf(m);
   for (int hole = 0; hole < int(coarse.holes.size()); ++hole) {
@@ -208,6 +213,28 @@ TEST(FakeHoles, NeverOverlapARealHoleEachOtherOrTheBorder) {
       EXPECT_FALSE(fakes[i]->cut.empty());
     }
   }
+}
+
+TEST(FakeHoles, OneIsCutAtTheMirrorPlaceWhereItIsKnownSurface) {
+  CMeshO m;
+  const auto coarse = WavySheetWithHoles(m, {Point3m(-0.5f, -0.8f, 0)});
+  ASSERT_EQ(coarse.FilledCount(), 1);
+  const vcg_ext::VertexFaces vf(m);
+  const auto own = LoopBall(m, coarse.holes[0].loop);
+  const Eigen::Vector3d twin(own.first.x(), -own.first.y(), own.first.z()); // across y = 0
+  curvature_inpaint::FakeHoleParams fp;
+  fp.mirror_places = {twin};
+  std::string why;
+  const auto fakes = curvature_inpaint::CutFakeHoles(m, vf, coarse, 0, fp, &why);
+  ASSERT_EQ(int(fakes.size()), fp.count + 1) << why;
+  EXPECT_TRUE(fakes.back()->at_mirror_place);
+  EXPECT_LT((fakes.back()->centre - twin).norm(), own.second);
+  for (size_t i = 0; i + 1 < fakes.size(); ++i) EXPECT_FALSE(fakes[i]->at_mirror_place);
+  // Where the mirror place is the hole itself (a hole across the plane), none is cut there.
+  fp.mirror_places = {own.first};
+  const auto across = curvature_inpaint::CutFakeHoles(m, vf, coarse, 0, fp, &why);
+  EXPECT_EQ(int(across.size()), fp.count) << why;
+  for (const auto& f : across) EXPECT_FALSE(f->at_mirror_place);
 }
 
 TEST(FakeHoles, ASmallClosedPartFallsBackToTheVariationScoreAndSaysSo) {
@@ -279,7 +306,8 @@ TEST(Symmetry, AHoleOverABumpComesBackLikeItsTwin) {
   EXPECT_EQ(r.kind.rfind("symmetry", 0), 0u)
       << "chose " << r.kind << ": "
       << curvature_inpaint::DescribeValidation(r.candidates, r.validation_errors, r.choice,
-                                               r.fake_holes, r.validation_note);
+                                               r.fake_holes, r.mirror_fake_holes,
+                                               r.validation_note);
   // The twin's height is the bump's: the mirror image brings it back.
   EXPECT_NEAR(test::FillHeight(m, scan_vertices, bump), test::kEggBump, 0.1 * test::kEggBump);
 }
@@ -297,6 +325,7 @@ TEST(Symmetry, AHoleWhoseTwinIsMissingTooKeepsTheContinuation) {
     ASSERT_TRUE(r.problem.empty() || r.problem.find("coarse fill validated") != std::string::npos)
         << r.problem;
     EXPECT_EQ(std::count(r.candidates.begin(), r.candidates.end(), "symmetry"), 0);
+    EXPECT_EQ(r.mirror_fake_holes, 0) << "the mirror place is the other hole";
     if (r.problem.empty()) EXPECT_EQ(r.kind, "continuation");
   }
 }
@@ -366,7 +395,8 @@ TEST(Creases, AHoleOnACubesEdgeAndOneOnItsCornerComeBackSharp) {
   for (const auto& r : result.holes) {
     ASSERT_TRUE(r.problem.empty()) << r.problem;
     EXPECT_EQ(r.kind, "creases") << curvature_inpaint::DescribeValidation(
-        r.candidates, r.validation_errors, r.choice, r.fake_holes, r.validation_note);
+        r.candidates, r.validation_errors, r.choice, r.fake_holes, r.mirror_fake_holes,
+        r.validation_note);
   }
   // Every fill vertex on the cube (the edge straight, the corner where the three faces meet)
   // within 1 % of the edge's length; every fill triangle with its corners on one face lies in

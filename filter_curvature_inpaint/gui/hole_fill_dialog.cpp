@@ -476,10 +476,10 @@ void HoleFillDialog::ShowHoles() {
     auto* row = new QHBoxLayout;
     column->addLayout(row);
     if (!hv.candidates.empty() || !hv.validation_note.empty()) {
-      auto* validation = new QLabel(
-          "Validation " +
-          QString::fromStdString(DescribeValidation(hv.candidates, hv.validation_errors, hv.choice,
-                                                    hv.fake_holes, hv.validation_note)));
+      auto* validation =
+          new QLabel("Validation " + QString::fromStdString(DescribeValidation(
+                                         hv.candidates, hv.validation_errors, hv.choice,
+                                         hv.fake_holes, hv.mirror_fake_holes, hv.validation_note)));
       validation->setObjectName(QString("validation_%1").arg(k + 1));
       validation->setWordWrap(true);
       validation->setToolTip("Each way to fill this hole, tried on holes of its size cut into the "
