@@ -145,31 +145,31 @@ std::vector<std::unique_ptr<FakeHole>> CutFakeHoles(const CMeshO& m, const vcg_e
   const double r = real.radius, piece = params.piece * r;
   if (!(r > 0)) return fakes;
 
+  // Each mirror place is taken at the scan vertex nearest to it, if one lies within a hole
+  // radius (elsewhere the mirror image of the hole is not on the known surface).
+  std::vector<Eigen::Vector3d> mirror_places;
+  for (const auto& plane : params.mirror_planes)
+    mirror_places.push_back(plane.Reflect(real.centre));
+  std::vector<int> mirror_vertices(mirror_places.size(), -1);
+  std::vector<double> mirror_d2(mirror_places.size(), r * r);
   std::vector<int> places;
   for (size_t v = 0; v < scan_vertices; ++v) {
     if (m.vert[v].IsD()) continue;
-    const double d = (ToEigen(m.vert[v].cP()) - real.centre).norm();
+    const Eigen::Vector3d q = ToEigen(m.vert[v].cP());
+    const double d = (q - real.centre).norm();
     if (d > piece + r && d <= params.farthest * r) places.push_back(int(v));
+    for (size_t k = 0; k < mirror_places.size(); ++k) {
+      const double d2 = (q - mirror_places[k]).squaredNorm();
+      if (d2 < mirror_d2[k]) mirror_d2[k] = d2, mirror_vertices[k] = int(v);
+    }
   }
   std::mt19937 rng(params.seed * 1000003u + uint32_t(hole));
   std::shuffle(places.begin(), places.end(), rng);
-  // Each mirror place as the scan vertex nearest to it, if one lies within a hole radius
-  // (elsewhere the mirror image of the hole is not on the known surface).
-  std::vector<int> mirror_vertices;
-  for (const Eigen::Vector3d& q : params.mirror_places) {
-    int nearest = -1;
-    double best = r * r;
-    for (size_t v = 0; v < scan_vertices; ++v) {
-      if (m.vert[v].IsD()) continue;
-      const double d2 = (ToEigen(m.vert[v].cP()) - q).squaredNorm();
-      if (d2 < best) best = d2, nearest = int(v);
-    }
-    if (nearest >= 0) mirror_vertices.push_back(nearest);
-  }
   int attempts = 0, near = 0;
   std::vector<std::pair<int, bool>> tries; // (vertex, at a mirror place)
   for (int v : places) tries.emplace_back(v, false);
-  for (int v : mirror_vertices) tries.emplace_back(v, true);
+  for (int v : mirror_vertices)
+    if (v >= 0) tries.emplace_back(v, true);
   for (const auto& place : tries) {
     const int v = place.first;
     const bool at_mirror = place.second;

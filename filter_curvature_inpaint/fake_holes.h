@@ -7,6 +7,7 @@
 #include "meshlab_mesh.h"
 #include <vcg_ext/coarse_fill.h>
 #include <vcg_ext/hole_segmentation.h>
+#include <vcg_ext/reflective_symmetry.h>
 
 #include <Eigen/Core>
 
@@ -36,17 +37,17 @@ struct FakeHoleParams {
   double farthest = 10;  ///< fake holes lie within this many hole radii of the real one
   int max_attempts = 48; ///< places tried per real hole
   uint32_t seed = 1;
-  /// The real hole's centre reflected in each of the object's mirror planes (the mesh's
-  /// units): where the surface there is known, one fake hole is cut there besides `count`
-  /// near the hole (none if there is no room near it). On a symmetric object the twin of the
-  /// missing surface is the fake hole most like it.
-  std::vector<Eigen::Vector3d> mirror_places;
+  /// The object's mirror planes (the mesh's units): where the real hole's mirror image in one
+  /// is known surface, one fake hole is cut there besides `count` near the hole (none if there
+  /// is no room near it). On a symmetric object the twin of the missing surface is the fake
+  /// hole most like it.
+  std::vector<vcg_ext::SymmetryPlane> mirror_planes;
 };
 
 /// Cuts up to `params.count` fake holes of the size of hole `hole` of `coarse` into the scan
-/// faces of `m` (after its coarse fill; `vf` its vertex-face adjacency), and one at each
-/// mirror place. A fake hole and the piece around it never overlap a real hole (filled or
-/// not), the mesh's border, or another near fake's piece (a mirror place's may overlap
+/// faces of `m` (after its coarse fill; `vf` its vertex-face adjacency), and one at its
+/// mirror place in each mirror plane. A fake hole and the piece around it never overlap a real hole
+/// (filled or not), the mesh's border, or another near fake's piece (a mirror place's may overlap
 /// those). Places near it are tried in an order fixed by the seed and the hole (so the result
 /// does not depend on threads), then the mirror places. Fewer (or none) where there is no
 /// room: `why` says so.

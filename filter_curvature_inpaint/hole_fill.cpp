@@ -304,15 +304,7 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
   FakeHoleParams fp;
   fp.count = vp.fake_holes;
   fp.seed = params.inpaint.seed;
-  if (ctx.symmetry) {
-    const auto& loop = ctx.coarse->holes[size_t(hi.hole)].loop;
-    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-    for (int v : loop) {
-      const auto& q = ctx.mesh->vert[size_t(v)].cP();
-      centre += Eigen::Vector3d(q[0], q[1], q[2]);
-    }
-    if (!loop.empty()) fp.mirror_places = MirrorPlaces(*ctx.symmetry, centre / double(loop.size()));
-  }
+  if (ctx.symmetry) fp.mirror_planes = MirrorPlanesInMeshUnits(*ctx.symmetry);
   std::string why;
   const auto fakes = CutFakeHoles(*ctx.mesh, *ctx.vf, *ctx.coarse, hi.hole, fp, &why);
   const size_t n = hv.candidates.size();

@@ -46,13 +46,11 @@ std::unique_ptr<SymmetryPrior> DetectSymmetry(const CMeshO& m,
   return prior;
 }
 
-std::vector<Eigen::Vector3d> MirrorPlaces(const SymmetryPrior& prior,
-                                          const Eigen::Vector3d& centre) {
-  std::vector<Eigen::Vector3d> places;
-  const Eigen::Vector3d unit = (centre - prior.box.origin) * prior.box.scale;
-  for (const auto& plane : prior.planes)
-    places.push_back(plane.Reflect(unit) / prior.box.scale + prior.box.origin);
-  return places;
+std::vector<vcg_ext::SymmetryPlane> MirrorPlanesInMeshUnits(const SymmetryPrior& prior) {
+  // n . u = d with u = (x - origin) scale is n . x = d / scale + n . origin.
+  std::vector<vcg_ext::SymmetryPlane> planes = prior.planes;
+  for (auto& p : planes) p.offset = p.offset / prior.box.scale + p.normal.dot(prior.box.origin);
+  return planes;
 }
 
 std::string DescribeSymmetry(const std::vector<vcg_ext::SymmetryPlane>& planes,

@@ -37,9 +37,8 @@ std::unique_ptr<SymmetryPrior> DetectSymmetry(const CMeshO& m,
                                               const vcg_ext::CoarseFillResult& coarse,
                                               const vcg_ext::SymmetryParams& params);
 
-/// `centre` (the mesh's units) reflected in each of the object's accepted planes.
-std::vector<Eigen::Vector3d> MirrorPlaces(const SymmetryPrior& prior,
-                                          const Eigen::Vector3d& centre);
+/// The object's accepted planes in the mesh's units (the prior's are in its unit box).
+std::vector<vcg_ext::SymmetryPlane> MirrorPlanesInMeshUnits(const SymmetryPrior& prior);
 
 /// "symmetry: ..." for the log: the planes found with their coverage and residual, or none.
 std::string DescribeSymmetry(const std::vector<vcg_ext::SymmetryPlane>& planes,

@@ -223,15 +223,17 @@ TEST(FakeHoles, OneIsCutAtTheMirrorPlaceWhereItIsKnownSurface) {
   const auto own = LoopBall(m, coarse.holes[0].loop);
   const Eigen::Vector3d twin(own.first.x(), -own.first.y(), own.first.z()); // across y = 0
   curvature_inpaint::FakeHoleParams fp;
-  fp.mirror_places = {twin};
+  vcg_ext::SymmetryPlane plane; // y = 0
+  plane.normal = Eigen::Vector3d::UnitY();
+  fp.mirror_planes = {plane};
   std::string why;
   const auto fakes = curvature_inpaint::CutFakeHoles(m, vf, coarse, 0, fp, &why);
   ASSERT_EQ(int(fakes.size()), fp.count + 1) << why;
   EXPECT_TRUE(fakes.back()->at_mirror_place);
   EXPECT_LT((fakes.back()->centre - twin).norm(), own.second);
   for (size_t i = 0; i + 1 < fakes.size(); ++i) EXPECT_FALSE(fakes[i]->at_mirror_place);
-  // Where the mirror place is the hole itself (a hole across the plane), none is cut there.
-  fp.mirror_places = {own.first};
+  // A plane through the hole: its mirror place is the hole itself, and none is cut there.
+  fp.mirror_planes[0].offset = own.first.y();
   const auto across = curvature_inpaint::CutFakeHoles(m, vf, coarse, 0, fp, &why);
   EXPECT_EQ(int(across.size()), fp.count) << why;
   for (const auto& f : across) EXPECT_FALSE(f->at_mirror_place);
