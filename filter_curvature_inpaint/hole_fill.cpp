@@ -5,6 +5,7 @@
 #include "pipeline.h"
 
 #include <vcg_ext/curvature_colormap.h>
+#include <vcg_ext/hole_fairing.h>
 #include <vcg_ext/parallel_for.h>
 #include <vcg_ext/self_intersections.h>
 
@@ -270,6 +271,33 @@ vcg_ext::CreaseFill CreasedPatch(const HoleImage& hi, const HoleFillParams& para
   return f;
 }
 
+/// A patch with its fill vertices moved, or why there is none.
+struct PatchFill {
+  std::vector<Eigen::Vector3d> points; ///< the whole patch, unit box
+  std::string problem;
+};
+
+/// The patch with its fill faired once more so that it continues the curvature of the known
+/// surface around it, not only its tangents (a tri-Laplacian, every known vertex fixed; the
+/// patch's context holds the two rings it needs), backed off where it would fold or cross the
+/// patch; empty points with a `problem` where the system cannot be solved.
+PatchFill TriLaplacianPatch(const HoleImage& hi) {
+  PatchFill f;
+  f.points = hi.patch.points;
+  vcg_ext::HoleFairingParams fp;
+  fp.order = 3;
+  // It starts from the thin plate, whose weights are already those of a curved fill: two
+  // plain solves settle them.
+  fp.iterations = 2;
+  fp.over_relaxation = 1;
+  if (!vcg_ext::FairFreeVertices(f.points, hi.patch.triangles, hi.is_new, fp))
+    f.problem = "its tri-Laplacian system cannot be solved";
+  else if (BackOff(hi.patch, f.points) < 0)
+    f.problem = "its tri-Laplacian fill would fold the patch or make it cross itself";
+  if (!f.problem.empty()) f.points.clear();
+  return f;
+}
+
 /// The fill triangles of a patch.
 std::vector<std::array<int, 3>> FillTriangles(const vcg_ext::PatchMesh& patch) {
   std::vector<std::array<int, 3>> tris;
@@ -294,6 +322,8 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
   const size_t first_prior = hv.candidates.size();
   const bool exemplar = params.exemplar;
   if (exemplar) hv.candidates.push_back("exemplar");
+  const size_t tri_laplacian_candidate = hv.candidates.size();
+  if (params.tri_laplacian) hv.candidates.push_back("tri-laplacian");
   const size_t first_symmetry = hv.candidates.size();
   if (symmetric) {
     hv.candidates.push_back("symmetry");
@@ -378,6 +408,9 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
           PatchDeformation d = DeformPatch(f, copied[0], direct);
           if (d.result.solved) t.fills.back() = std::move(d.points);
         }
+      } else if (params.tri_laplacian && c == tri_laplacian_candidate) {
+        PatchFill faired = TriLaplacianPatch(f);
+        if (faired.problem.empty()) t.fills.back() = std::move(faired.points);
       } else if (symmetric && c == first_symmetry && mirror.problem.empty()) {
         PatchDeformation d = DeformPatch(f, SurfaceImage(f, mirror.points, params), direct);
         if (d.result.solved) t.fills.back() = std::move(d.points), t.applies[c] = 1;
@@ -498,6 +531,14 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& 
     if (at_scale.detail_scale <= 0) at_scale.detail_scale = hv.detail_scale;
     SetContinuations(hv, Inpaint(hv.image, hv.mask, at_scale));
     if (params.exemplar && params.inpaint.backend == "embedded") AddExemplars(hv, at_scale);
+    if (params.tri_laplacian) {
+      PatchFill faired = TriLaplacianPatch(hi);
+      if (faired.problem.empty()) {
+        hv.variations.push_back(SurfaceImage(hi, faired.points, params));
+        hv.kinds.push_back("tri-laplacian");
+        hv.surfaces.push_back(std::move(faired.points));
+      }
+    }
     if (symmetric) {
       const QImage image = SurfaceImage(hi, mirror.points, params);
       hv.variations.push_back(image);
@@ -674,13 +715,13 @@ void InpaintAgain(HoleVariations& hole, const InpaintParams& params) {
   InpaintParams at_scale = params;
   at_scale.detail = hole.detail;
   if (at_scale.detail_scale <= 0) at_scale.detail_scale = hole.detail_scale;
-  // New continuations and exemplars; the surface priors' variations (symmetry, creases: no
-  // seed changes them) stay after them.
+  // New continuations and exemplars; the other variations (symmetry, creases, tri-Laplacian:
+  // no seed changes them) stay after them.
   HoleVariations priors;
   bool exemplars = false;
   for (size_t j = 0; j < hole.variations.size(); ++j) {
     exemplars = exemplars || KindOf(hole, j) == "exemplar";
-    if (KindOf(hole, j).rfind("symmetry", 0) == 0 || KindOf(hole, j) == "creases") {
+    if (KindOf(hole, j) != "continuation" && KindOf(hole, j) != "exemplar") {
       priors.variations.push_back(hole.variations[j]);
       priors.kinds.push_back(hole.kinds[j]);
       priors.surfaces.push_back(j < hole.surfaces.size() ? hole.surfaces[j]

@@ -51,6 +51,9 @@ struct HoleFillParams {
   /// Each hole that creases of its context run into gets one more variation: the context's
   /// smooth faces extended across it until they meet ("creases", vcg_ext/crease_fill.h).
   bool creases = true;
+  /// Each hole gets one more variation: its fill faired to continue the curvature of the
+  /// surface around it, not only its tangents ("tri-laplacian"; validated like the rest).
+  bool tri_laplacian = true;
   vcg_ext::CreaseFillParams crease_fill;
   std::string images_dir; ///< where to write every hole's images; empty: nowhere
   /// Instead of a backend: the folder where the Curvature Images stage wrote hole_<k>.json and
@@ -101,7 +104,8 @@ struct HoleVariations {
   QImage image, mask; ///< the coarse curvature image and its hole (white)
   /// The backend's completions of `image` ("continuation"), then the priors' variations.
   std::vector<QImage> variations;
-  /// Per variation: "continuation", "exemplar", "symmetry", "symmetry surface" or "creases".
+  /// Per variation: "continuation", "exemplar", "symmetry", "symmetry surface", "creases" or
+  /// "tri-laplacian".
   std::vector<std::string> kinds;
   /// Per variation: empty where the patch is deformed to the image's curvature, else the
   /// patch (unit box) the hole takes as it is ("symmetry surface").

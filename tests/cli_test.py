@@ -333,9 +333,10 @@ class DetailAndValidation(TempDirTest):
             v = h["validation"]
             names = [c["name"] for c in v["candidates"]]
             self.assertEqual(names[:5], ["coarse", "detail 0", "detail 0.5", "detail 1", "detail 2"])
-            # Where the hole's mirror image is known surface, the symmetry prior's two more; the
-            # exemplar only when asked for.
-            self.assertIn(names[5:], [[], ["symmetry", "symmetry surface"], ["creases"],
+            # The tri-Laplacian fill on every hole; where the hole's mirror image is known
+            # surface, the symmetry prior's two more; the exemplar only when asked for.
+            self.assertEqual(names[5], "tri-laplacian")
+            self.assertIn(names[6:], [[], ["symmetry", "symmetry surface"], ["creases"],
                                       ["symmetry", "symmetry surface", "creases"]])
             self.assertEqual(h["kinds"][4:], names[5:])
             self.assertGreaterEqual(v["fake_holes"], 1)

@@ -308,4 +308,45 @@ TEST(CoarseFill, HoleOfOverAThousandEdgesTakesTheEars) {
   for (int v : result.holes[0].new_vertices) ASSERT_NEAR(m.vert[v].cP()[2], 0.0, 1e-5);
 }
 
+// A low height field z = (x^2 + y^2)^2 / 10 over a grid, its middle flattened. With weights
+// close to the flat grid's (one solve) the thin plate reproduces only what is at most cubic
+// across the hole, the tri-Laplacian up to quintic: it brings the quartic back, the thin plate
+// cannot.
+TEST(FairFreeVertices, TheTriLaplacianContinuesCurvatureTheThinPlateCannot) {
+  const int n = 41;
+  std::vector<Eigen::Vector3d> truth, points;
+  std::vector<char> is_free;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double x = -1 + 2.0 * i / (n - 1), y = -1 + 2.0 * j / (n - 1);
+      const double r2 = x * x + y * y;
+      truth.emplace_back(x, y, 0.1 * r2 * r2);
+      is_free.push_back(r2 < 0.5 * 0.5);
+      points.push_back(is_free.back() ? Eigen::Vector3d(x, y, 0) : truth.back());
+    }
+  std::vector<std::array<int, 3>> tris;
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i) {
+      const int a = j * n + i, b = a + 1, c = a + n, d = c + 1;
+      tris.push_back({a, b, d});
+      tris.push_back({a, d, c});
+    }
+  auto max_error = [&](int order) {
+    std::vector<Eigen::Vector3d> faired = points;
+    vcg_ext::HoleFairingParams params;
+    params.order = order;
+    params.iterations = 1;
+    EXPECT_TRUE(vcg_ext::FairFreeVertices(faired, tris, is_free, params));
+    double worst = 0;
+    for (size_t v = 0; v < faired.size(); ++v) {
+      if (!is_free[v]) EXPECT_EQ(faired[v], points[v]) << "a fixed vertex moved";
+      worst = std::max(worst, (faired[v] - truth[v]).norm());
+    }
+    return worst;
+  };
+  const double thin_plate = max_error(2), tri_laplacian = max_error(3);
+  EXPECT_GT(thin_plate, 0.002); // the quartic's own depth there is 0.006
+  EXPECT_LT(tri_laplacian, 0.1 * thin_plate) << thin_plate;
+}
+
 } // namespace

@@ -160,10 +160,10 @@ private slots:
                        1;
       if (choice == "coarse")
         QCOMPARE(hole.pick, 0);
-      else if (choice == "exemplar" || choice.rfind("symmetry", 0) == 0)
-        QCOMPARE(hole.kinds[size_t(hole.pick - 1)], choice);
-      else
+      else if (choice.rfind("detail", 0) == 0)
         QCOMPARE(hole.pick, best);
+      else
+        QCOMPARE(hole.kinds[size_t(hole.pick - 1)], choice);
     }
     QVERIFY(Find<QLabel>(d, "validation_1")->text().contains("chose"));
     QVERIFY(d.windowTitle().contains("3 of 3 holes ready"));
@@ -219,18 +219,20 @@ private slots:
     const auto& hole = d.Holes()[0];
     QVERIFY2(hole.problem.empty(), hole.problem.c_str());
     QVERIFY2(hole.symmetry_note.empty(), hole.symmetry_note.c_str());
-    QCOMPARE(hole.kinds, (std::vector<std::string>{"continuation", "continuation", "exemplar",
-                                                   "exemplar", "symmetry", "symmetry surface"}));
+    QCOMPARE(hole.kinds,
+             (std::vector<std::string>{"continuation", "continuation", "exemplar", "exemplar",
+                                       "tri-laplacian", "symmetry", "symmetry surface"}));
     QCOMPARE(hole.kinds[size_t(hole.pick - 1)], std::string("continuation"));
     // Each item says its kind; clicking the mirrored surface chooses it.
     auto* list = Find<QListWidget>(d, "variations_1");
-    QCOMPARE(list->count(), 6);
+    QCOMPARE(list->count(), 7);
     QVERIFY(list->item(2)->text().contains("exemplar"));
-    QVERIFY(list->item(4)->text().contains("symmetry"));
-    QCOMPARE(list->item(5)->data(Qt::UserRole).toString(), QString("symmetry surface"));
+    QVERIFY(list->item(4)->text().contains("tri-laplacian"));
+    QVERIFY(list->item(5)->text().contains("symmetry"));
+    QCOMPARE(list->item(6)->data(Qt::UserRole).toString(), QString("symmetry surface"));
     QTest::mouseClick(list->viewport(), Qt::LeftButton, {},
-                      list->visualItemRect(list->item(5)).center());
-    QCOMPARE(d.Holes()[0].pick, 6);
+                      list->visualItemRect(list->item(6)).center());
+    QCOMPARE(d.Holes()[0].pick, 7);
     // Apply's input: the hole takes the mirrored surface, bump and all.
     CMeshO applied;
     curvature_inpaint::CopyMesh(egg, applied);
@@ -241,6 +243,7 @@ private slots:
     // Unchecked, the preview offers the continuations alone.
     Find<QCheckBox>(d, "symmetry")->setChecked(false);
     Find<QCheckBox>(d, "exemplar")->setChecked(false);
+    Find<QCheckBox>(d, "triLaplacian")->setChecked(false);
     d.Inpaint();
     QTRY_VERIFY_WITH_TIMEOUT(!d.Busy(), 120000);
     QCOMPARE(d.Holes()[0].kinds, (std::vector<std::string>{"continuation", "continuation"}));
@@ -249,6 +252,9 @@ private slots:
   void reroll_replaces_one_hole() {
     HoleFillDialog d(mesh_);
     Find<QSpinBox>(d, "variations")->setValue(2);
+    // A seed changes the continuations only where they carry detail.
+    Find<QSpinBox>(d, "fakeHoles")->setValue(0);
+    Find<QDoubleSpinBox>(d, "detail")->setValue(1);
     d.Inpaint();
     QTRY_VERIFY_WITH_TIMEOUT(!d.Busy(), 120000);
     const QImage before = d.Holes()[0].variations[0], other = d.Holes()[1].variations[0];

@@ -271,19 +271,20 @@ class FillPipeline(TempDirTest):
         holes = json.load(open(report))["holes"]
         self.assertEqual(len(holes), 3)
         for h in holes:
-            # Four continuations, then the symmetry prior's variations where the hole has them.
+            # Four continuations, then the priors' variations (the tri-Laplacian's on every hole).
             self.assertEqual(h["kinds"][:4], ["continuation"] * 4)
             self.assertEqual(len(h["scores"]), len(h["kinds"]))
             # The best-scored continuation, unless the fake holes found the coarse fill (then
             # none) or a prior's variation closer (then that one).
             choice = h["validation"]["choice"]
             best = 1 + max(range(4), key=lambda i: h["scores"][i])
+            self.assertIn("tri-laplacian", h["kinds"][4:])
             if choice == "coarse":
                 self.assertEqual(h["pick"], 0)
-            elif choice == "exemplar" or choice.startswith("symmetry"):
-                self.assertEqual(h["kinds"][h["pick"] - 1], choice)
-            else:
+            elif choice.startswith("detail"):
                 self.assertEqual(h["pick"], best)
+            else:
+                self.assertEqual(h["kinds"][h["pick"] - 1], choice)
         self.assertTrue(os.path.exists(self.path("img/montage.png")))
 
     def test_failing_backend_changes_nothing_and_says_why(self):

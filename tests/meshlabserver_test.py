@@ -95,31 +95,35 @@ class MeshlabServer(TempDirTest):
         self.assertEqual(filled["0"][:n], filled["2"][:n])
         self.assertNotEqual(filled["0"][n:], filled["2"][n:])
 
-    def test_symmetry_and_exemplar_parameters_reach_the_pipeline(self):
+    def test_symmetry_exemplar_and_tri_laplacian_parameters_reach_the_pipeline(self):
         # Igea is mirror-symmetric: the shipped script finds its plane and validates the
-        # symmetry candidates (the hole's mirror image is scan), not the exemplar (off by
-        # default); with the two parameters swapped, the exemplar and no symmetry.
+        # tri-Laplacian and the symmetry candidates (the hole's mirror image is scan), not the
+        # exemplar (off by default); with the three parameters swapped, the exemplar alone.
         src = self.punched("igea_190k.ply", 61000, 0.03)
         with open(os.path.join(SCRIPTS, "curvature_inpaint_hole_fill.mlx")) as f:
             shipped = f.read()
         self.assertIn('name="Symmetry" value="true"', shipped)
         self.assertIn('name="Exemplar" value="false"', shipped)
+        self.assertIn('name="TriLaplacian" value="true"', shipped)
         r = self.meshlabserver(src, self.path("shipped.ply"),
                                os.path.join(SCRIPTS, "curvature_inpaint_hole_fill.mlx"))
         log = r.stdout + r.stderr
         self.assertEqual(r.returncode, 0, log)
         self.assertRegex(log, r"symmetry: plane \(")
-        self.assertRegex(log, r"validation 1: .*detail 2 [\d.]+, symmetry [\d.]+, symmetry surface")
+        self.assertRegex(log, r"validation 1: .*detail 2 [\d.]+, tri-laplacian [\d.]+, symmetry "
+                              r"[\d.]+, symmetry surface")
         self.assertNotIn("exemplar", log)
         script = self.path("swapped.mlx")
         with open(script, "w") as f:
             f.write(shipped.replace('name="Symmetry" value="true"', 'name="Symmetry" value="false"')
-                    .replace('name="Exemplar" value="false"', 'name="Exemplar" value="true"'))
+                    .replace('name="Exemplar" value="false"', 'name="Exemplar" value="true"')
+                    .replace('name="TriLaplacian" value="true"', 'name="TriLaplacian" value="false"'))
         r = self.meshlabserver(src, self.path("swapped.ply"), script)
         log = r.stdout + r.stderr
         self.assertEqual(r.returncode, 0, log)
         self.assertNotIn("symmetry", log)
-        self.assertRegex(log, r"validation 1: .*detail 2 [\d.]+, exemplar [\d.]+")
+        self.assertNotIn("tri-laplacian", log)
+        self.assertRegex(log, r"validation 1: .*detail 2 [\d.]+, exemplar [\d.]+; chose")
         self.assertEqual(info(self.path("swapped.ply"))["holes"], 0)
 
     def edited_script(self, name, value_of):

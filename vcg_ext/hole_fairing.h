@@ -1,9 +1,10 @@
 // Stage 2c: fair a hole's fill (Liepa 2003, section 3.5; Botsch & Kobbelt 2004). The inserted
-// vertices solve  L^k x = 0  with cotangent weights, L = M^-1 W, while the loop (and for k = 2
-// the ring of vertices beyond it) stays fixed: k = 2 (thin plate) meets the surroundings with
-// matching tangents, k = 1 (membrane) only with matching positions, which keeps a planar hole
-// exactly planar. Only the patch and those rings enter the sparse system, never the whole
-// mesh, so the cost of a hole does not grow with the size of the mesh around it.
+// vertices solve  L^k x = 0  with cotangent weights, L = M^-1 W, while the loop and the k - 1
+// rings of vertices beyond it stay fixed: k = 3 meets the surroundings with matching
+// curvature, k = 2 (thin plate) with matching tangents, k = 1 (membrane) only with matching
+// positions, which keeps a planar hole exactly planar. Only the patch and those rings enter
+// the sparse system, never the whole mesh, so the cost of a hole does not grow with the size
+// of the mesh around it.
 #pragma once
 
 #include "hole_patch.h"
@@ -12,13 +13,18 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace vcg_ext {
 
 struct HoleFairingParams {
-  /// 2: bi-Laplacian (tangent continuity); 1: Laplacian (position continuity only).
+  /// 3: tri-Laplacian (curvature continuity; FairFreeVertices only, where two rings of fixed
+  /// vertices surround the free ones); 2: bi-Laplacian (tangent continuity); 1: Laplacian
+  /// (position continuity only).
   int order = 2;
   /// The cotangent weights depend on the geometry they fair, so the solve is repeated with
   /// weights taken from the previous result: the first uses the flat refined patch, which
@@ -105,63 +111,65 @@ private:
 
 } // namespace detail
 
-/// Fairs the inserted vertices of `patch` in place. Returns false, leaving the patch as it was,
-/// when the system cannot be solved (a degenerate neighbourhood). A patch without inserted
-/// vertices is already fair.
-inline bool FairHolePatch(HolePatch& patch, const HoleCollar& collar,
-                          const HoleFairingParams& params = {}) {
-  const int nb = patch.boundary_count;
-  const int np = int(patch.points.size());
-  const int nu = np - nb;
-  if (nu <= 0) return true;
-  const int n = np + int(collar.outer_points.size());
-  std::vector<Eigen::Vector3d> P(patch.points);
-  P.insert(P.end(), collar.outer_points.begin(), collar.outer_points.end());
-  std::vector<std::array<int, 3>> tris(patch.triangles);
-  for (auto t : collar.triangles) {
-    for (int& v : t)
-      if (v < 0) v = np + (-v - 1);
-    tris.push_back(t);
-  }
-  const std::vector<Eigen::Vector3d> unfaired(patch.points.begin() + nb, patch.points.end());
+/// Fairs the vertices of `points` marked in `is_free` in place, the others fixed: the free ones
+/// solve  L^k x = 0  over `triangles`, k = `params.order` (1-3). Precondition: `triangles`
+/// hold the k - 1 rings of fixed vertices around the free ones with every triangle around
+/// them (beyond, the operator would be cut off). Returns
+/// false, leaving the points as they were, when the system cannot be solved (a degenerate
+/// neighbourhood).
+inline bool FairFreeVertices(std::vector<Eigen::Vector3d>& points,
+                             const std::vector<std::array<int, 3>>& triangles,
+                             const std::vector<char>& is_free,
+                             const HoleFairingParams& params = {}) {
+  const int n = int(points.size());
+  std::vector<int> unknown(n, -1), free;
+  for (int v = 0; v < n; ++v)
+    if (is_free[v]) unknown[v] = int(free.size()), free.push_back(v);
+  const int nu = int(free.size());
+  if (nu == 0) return true;
+  const std::vector<Eigen::Vector3d> unfaired(points);
 
-  detail::CotanLaplacian W(n, tris);
+  detail::CotanLaplacian W(n, triangles);
   std::vector<double> mass(n);
   std::vector<double> acc(n, 0.0);
   std::vector<int> touched;
+  std::vector<std::pair<int, double>> row;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
   bool analyzed = false;
   for (int iteration = 0; iteration < params.iterations; ++iteration) {
-    W.Fill(P, mass);
-    // Rows of the unknowns of W M^-1 W (order 2) or W (order 1), split into unknown columns
-    // and fixed ones (moved to the right-hand side). Both are symmetric for the unknowns.
+    W.Fill(points, mass);
+    // Rows of the unknowns of W (M^-1 W)^(order-1), split into unknown columns and fixed ones
+    // (moved to the right-hand side). Every power is symmetric.
     std::vector<Eigen::Triplet<double>> auu;
     Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(nu, 3);
-    for (int u = nb; u < np; ++u) {
-      touched.clear();
-      auto add = [&](int j, double v) {
-        if (acc[j] == 0.0) touched.push_back(j);
-        acc[j] += v;
-      };
-      if (params.order == 1) {
-        W.ForEachInRow(u, add);
-      } else {
-        W.ForEachInRow(u, [&](int k, double wuk) {
-          const double s = wuk / std::max(mass[k], 1e-300);
-          W.ForEachInRow(k, [&](int j, double wkj) { add(j, s * wkj); });
-        });
+    auto add = [&](int j, double v) {
+      if (acc[j] == 0.0) touched.push_back(j);
+      acc[j] += v;
+    };
+    for (int u = 0; u < nu; ++u) {
+      // One sparse vector-matrix product per power; W is symmetric, so its rows are its
+      // columns.
+      row.assign(1, {free[u], 1.0});
+      for (int power = 0; power < params.order; ++power) {
+        for (const auto& kv : row) {
+          const double s = power == 0 ? kv.second : kv.second / std::max(mass[kv.first], 1e-300);
+          W.ForEachInRow(kv.first, [&](int j, double wkj) { add(j, s * wkj); });
+        }
+        row.clear();
+        for (int j : touched) row.push_back({j, acc[j]}), acc[j] = 0.0;
+        touched.clear();
       }
-      for (int j : touched) {
-        if (j >= nb && j < np)
-          auu.emplace_back(u - nb, j - nb, acc[j]);
+      for (const auto& jv : row) {
+        if (unknown[jv.first] >= 0)
+          auu.emplace_back(u, unknown[jv.first], jv.second);
         else
-          rhs.row(u - nb) -= acc[j] * P[j].transpose();
-        acc[j] = 0.0;
+          rhs.row(u) -= jv.second * points[jv.first].transpose();
       }
     }
     Eigen::SparseMatrix<double> Auu(nu, nu);
     Auu.setFromTriplets(auu.begin(), auu.end());
-    if (params.order == 1) Auu = -Auu, rhs = -rhs; // W is negative definite on the unknowns
+    // W is negative definite on the unknowns, so are its odd powers.
+    if (params.order % 2 == 1) Auu = -Auu, rhs = -rhs;
 
     Eigen::MatrixXd x;
     if (!analyzed) ldlt.analyzePattern(Auu), analyzed = true;
@@ -172,16 +180,38 @@ inline bool FairHolePatch(HolePatch& patch, const HoleCollar& collar,
       lu.compute(Auu);
       if (lu.info() == Eigen::Success) x = lu.solve(rhs);
       if (lu.info() != Eigen::Success || !x.allFinite()) {
-        if (iteration == 0) std::copy(unfaired.begin(), unfaired.end(), patch.points.begin() + nb);
+        if (iteration == 0) points = unfaired;
         return iteration > 0;
       }
     }
     const double step = iteration == 0 ? 1.0 : params.over_relaxation;
-    for (int u = 0; u < nu; ++u) {
-      P[nb + u] += step * (Eigen::Vector3d(x.row(u).transpose()) - P[nb + u]);
-      patch.points[nb + u] = P[nb + u];
-    }
+    for (int u = 0; u < nu; ++u)
+      points[free[u]] += step * (Eigen::Vector3d(x.row(u).transpose()) - points[free[u]]);
   }
+  return true;
+}
+
+/// Fairs the inserted vertices of `patch` in place, the loop and the collar fixed (order at
+/// most 2: the collar holds one ring). Returns false, leaving the patch as it was, when the
+/// system cannot be solved (a degenerate neighbourhood). A patch without inserted vertices
+/// is already fair.
+inline bool FairHolePatch(HolePatch& patch, const HoleCollar& collar,
+                          const HoleFairingParams& params = {}) {
+  const int nb = patch.boundary_count;
+  const int np = int(patch.points.size());
+  if (np <= nb) return true;
+  std::vector<Eigen::Vector3d> P(patch.points);
+  P.insert(P.end(), collar.outer_points.begin(), collar.outer_points.end());
+  std::vector<std::array<int, 3>> tris(patch.triangles);
+  for (auto t : collar.triangles) {
+    for (int& v : t)
+      if (v < 0) v = np + (-v - 1);
+    tris.push_back(t);
+  }
+  std::vector<char> is_free(P.size(), 0);
+  std::fill(is_free.begin() + nb, is_free.begin() + np, 1);
+  if (!FairFreeVertices(P, tris, is_free, params)) return false;
+  std::copy(P.begin() + nb, P.begin() + np, patch.points.begin() + nb);
   return true;
 }
 

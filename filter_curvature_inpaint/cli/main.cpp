@@ -32,11 +32,13 @@ const char* const kUsage =
     "                   [--transformation-constant T] [--max-hole-edges N] [--size PX]\n"
     "                   [--images DIR] [--report FILE.json] [--from-images DIR] [--context C]\n"
     "                   [--fake-holes K] [--fake-hole-size PX] [--detail A] [--density D]\n"
-    "                   [--no-symmetry] [--exemplar] [--no-creases] [--oracle GT]\n"
+    "                   [--no-symmetry] [--exemplar] [--no-creases] [--no-tri-laplacian]\n"
+    "                   [--oracle GT]\n"
     "      The main job: fill every hole of IN with detail (coarse fill, curvature images,\n"
     "      inpainting, deformation to the chosen variation) and write OUT. --pick auto (default)\n"
     "      takes the validated (or best-scored) variation; --pick KIND the first variation of\n"
-    "      that kind where a hole has one (exemplar, symmetry, symmetry surface, creases).\n"
+    "      that kind where a hole has one (exemplar, symmetry, symmetry surface, creases,\n"
+    "      tri-laplacian).\n"
     "      Backends and their options as for inpaint.\n"
     "      --from-images DIR deforms to hole_<k>_inpainted.png, inpainted by hand in DIR\n"
     "      after `images IN DIR --size PX` (same --max-hole-edges, --context, --size).\n"
@@ -51,6 +53,8 @@ const char* const kUsage =
     "      curvature copied in, ridges first; validated like the rest).\n"
     "      A hole that creases run into also gets its context's faces extended across it\n"
     "      until they meet (sharp edges and corners; validated); --no-creases leaves it out.\n"
+    "      Every hole also gets its fill faired to continue the curvature around it, not only\n"
+    "      its tangents (a tri-Laplacian; validated); --no-tri-laplacian leaves it out.\n"
     "      --density D: the fill's vertex density (Liepa's alpha; default 2, coarse 1.41).\n"
     "      --oracle GT (benchmarks): deform to the curvature image painted from GT, the mesh\n"
     "      before its holes were cut: the best any inpainter can do with this deformation.\n"
@@ -310,9 +314,10 @@ curvature_inpaint::HoleFillParams ReadFillOptions(Args& args) {
   p.symmetry.enabled = !args.Flag("--no-symmetry");
   p.exemplar = args.Flag("--exemplar");
   p.creases = !args.Flag("--no-creases");
+  p.tri_laplacian = !args.Flag("--no-tri-laplacian");
   const std::string pick = args.Option("--pick", "auto");
-  const std::vector<std::string> kinds{"continuation", "exemplar", "symmetry", "symmetry surface",
-                                       "creases"};
+  const std::vector<std::string> kinds{"continuation",     "exemplar", "symmetry",
+                                       "symmetry surface", "creases",  "tri-laplacian"};
   if (std::find(kinds.begin(), kinds.end(), pick) != kinds.end()) {
     p.pick_kind = pick;
   } else if (pick != "auto") {
@@ -320,7 +325,7 @@ curvature_inpaint::HoleFillParams ReadFillOptions(Args& args) {
     const long k = std::strtol(pick.c_str(), &end, 10);
     if (*end != '\0' || k < 1)
       throw UsageError("--pick needs auto, a variation number >= 1 or a kind (continuation, "
-                       "exemplar, symmetry, symmetry surface, creases)");
+                       "exemplar, symmetry, symmetry surface, creases, tri-laplacian)");
     p.pick = int(k);
   }
   p.mode = args.Option("--mode", p.mode);

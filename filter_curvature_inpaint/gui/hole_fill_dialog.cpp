@@ -162,6 +162,14 @@ HoleFillDialog::HoleFillDialog(const CMeshO& mesh, QWidget* parent)
                        "the smooth faces around it extended until they meet, chosen "
                        "automatically where the fake holes validate it.");
   form->addRow("&Creases", creases_);
+  tri_laplacian_ = new QCheckBox("Continue the curvature");
+  tri_laplacian_->setObjectName("triLaplacian");
+  tri_laplacian_->setChecked(defaults.tri_laplacian);
+  tri_laplacian_->setToolTip("Each hole gets one more variation (\"tri-laplacian\"): its fill "
+                             "faired to continue the curvature of the surface around it, not "
+                             "only its tangents, chosen automatically where the fake holes "
+                             "validate it.");
+  form->addRow("Tri-&Laplacian", tri_laplacian_);
   similitude_ = new QDoubleSpinBox;
   similitude_->setObjectName("similitude");
   similitude_->setRange(1, 255);
@@ -260,6 +268,7 @@ HoleFillParams HoleFillDialog::Params() const {
   p.symmetry.enabled = symmetry_->isChecked();
   p.exemplar = exemplar_->isChecked();
   p.creases = creases_->isChecked();
+  p.tri_laplacian = tri_laplacian_->isChecked();
   p.paper.similitude = similitude_->value();
   bool ok = false;
   const double tc = transformation_constant_->text().toDouble(&ok);
@@ -333,6 +342,7 @@ void HoleFillDialog::LoadSettings() {
   symmetry_->setChecked(s.value("symmetry", HoleFillParams().symmetry.enabled).toBool());
   exemplar_->setChecked(s.value("exemplar", HoleFillParams().exemplar).toBool());
   creases_->setChecked(s.value("creases", HoleFillParams().creases).toBool());
+  tri_laplacian_->setChecked(s.value("triLaplacian", HoleFillParams().tri_laplacian).toBool());
   similitude_->setValue(s.value("similitude", 30.0).toDouble());
   transformation_constant_->setText(s.value("transformation_constant", "5e-05").toString());
   const int m = mode_->findText(s.value("mode", "direct").toString());
@@ -357,6 +367,7 @@ void HoleFillDialog::SaveSettings() const {
   s.setValue("symmetry", symmetry_->isChecked());
   s.setValue("exemplar", exemplar_->isChecked());
   s.setValue("creases", creases_->isChecked());
+  s.setValue("triLaplacian", tri_laplacian_->isChecked());
   s.setValue("similitude", similitude_->value());
   s.setValue("transformation_constant", transformation_constant_->text());
   s.setValue("mode", mode_->currentText());

@@ -87,6 +87,7 @@ private:
   QCheckBox* symmetry_;
   QCheckBox* exemplar_;
   QCheckBox* creases_;
+  QCheckBox* tri_laplacian_;
   QDoubleSpinBox* similitude_;
   QLineEdit* transformation_constant_;
   QComboBox* mode_;

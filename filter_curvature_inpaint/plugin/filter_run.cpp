@@ -118,6 +118,7 @@ void RunHoleFillFromParams(MeshModel& mm, const ParamValues& v, const FilterEnvi
   p.symmetry.enabled = v.Bool("Symmetry");
   p.exemplar = v.Bool("Exemplar");
   p.creases = v.Bool("Creases");
+  p.tri_laplacian = v.Bool("TriLaplacian");
   ReadDeformationParams(v, p);
   p.images.coarse.max_hole_edges = v.Int("MaxHoleSize");
   p.images.coarse.keep_longest_open = v.Bool("KeepLongestOpen");

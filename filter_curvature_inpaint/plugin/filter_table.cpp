@@ -182,6 +182,10 @@ FilterSpec HoleFill() {
                    "A hole that sharp edges run into gets one more variation: the smooth faces "
                    "around it extended until they meet, so edges and corners come back sharp; "
                    "used where the fake holes validate it."));
+  p.push_back(Bool("TriLaplacian", d.tri_laplacian, "Continue the curvature",
+                   "Each hole gets one more variation: its fill faired to continue the "
+                   "curvature of the surface around it, not only its tangents (tri-Laplacian); "
+                   "used where the fake holes validate it."));
   AddPaperModeParams(p);
   p.push_back(Enum("Mode", 0, {"direct", "paper"}, "Deformation",
                    "direct: a few sparse solves for the positions whose mean curvature matches "
