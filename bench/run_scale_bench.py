@@ -90,8 +90,8 @@ def main():
         rows = []
         for label, args in (
                 ("ours: whole method (`fill`, 4 fake holes per hole)", [tool, "fill", ten, out]),
-                ("ours: whole method without the priors (`--no-symmetry --no-creases`)",
-                 [tool, "fill", ten, out, "--no-symmetry", "--no-creases"]),
+                ("ours: whole method without the priors (`--no-symmetry --no-creases --no-tri-laplacian`)",
+                 [tool, "fill", ten, out, "--no-symmetry", "--no-creases", "--no-tri-laplacian"]),
                 ("ours: whole method without fake holes", [tool, "fill", ten, out, "--fake-holes", "0"]),
                 ("CGAL: triangulate_refine_and_fair_hole", [os.path.join(BIN, "cgal_fill"), ten, out])):
             runs = sorted(measured(args)[:2] for _ in range(3))
