@@ -307,13 +307,15 @@ std::vector<std::array<int, 3>> FillTriangles(const vcg_ext::PatchMesh& patch) {
 }
 
 /// Fake-hole validation of hole `hi` (embedded backend): every candidate (the coarse fill, the
-/// embedded inpainter at each detail amplitude, the exemplar if asked for, with `symmetric`
-/// the mirror image's curvature and surface, with `creased` the crease fill) fills fake holes
+/// embedded inpainter at each detail amplitude, the exemplar if asked for, with `continued` the
+/// tri-Laplacian fill, with `symmetric` the mirror image's curvature and surface, with
+/// `creased` the crease fill: each prior only where the hole itself has it) fills fake holes
 /// of its size near it and is scored against the surface that was cut out; `hv` gets the
 /// candidates, their errors and the choice (-1 when there was no room for fake holes: the variation
 /// score then chooses alone).
 void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const InpaintParams& inpaint,
-                  const ValidationContext& ctx, bool symmetric, bool creased, HoleVariations& hv) {
+                  const ValidationContext& ctx, bool continued, bool symmetric, bool creased,
+                  HoleVariations& hv) {
   const ValidationParams& vp = params.validation;
   if (vp.coarse) hv.candidates.push_back("coarse");
   const size_t first_detail = hv.candidates.size();
@@ -323,7 +325,7 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
   const bool exemplar = params.exemplar;
   if (exemplar) hv.candidates.push_back("exemplar");
   const size_t tri_laplacian_candidate = hv.candidates.size();
-  if (params.tri_laplacian) hv.candidates.push_back("tri-laplacian");
+  if (continued) hv.candidates.push_back("tri-laplacian");
   const size_t first_symmetry = hv.candidates.size();
   if (symmetric) {
     hv.candidates.push_back("symmetry");
@@ -408,7 +410,7 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
           PatchDeformation d = DeformPatch(f, copied[0], direct);
           if (d.result.solved) t.fills.back() = std::move(d.points);
         }
-      } else if (params.tri_laplacian && c == tri_laplacian_candidate) {
+      } else if (continued && c == tri_laplacian_candidate) {
         PatchFill faired = TriLaplacianPatch(f);
         if (faired.problem.empty()) t.fills.back() = std::move(faired.points);
       } else if (symmetric && c == first_symmetry && mirror.problem.empty()) {
@@ -524,20 +526,20 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& 
       hv.crease_note = crease.problem;
     }
     const bool creased = params.creases && crease.problem.empty();
+    PatchFill faired;
+    if (params.tri_laplacian) faired = TriLaplacianPatch(hi);
+    const bool continued = params.tri_laplacian && faired.problem.empty();
     if (ctx.vf && ValidatesOnFakeHoles(params))
-      ValidateHole(hi, params, inpaint, ctx, symmetric, creased, hv);
+      ValidateHole(hi, params, inpaint, ctx, continued, symmetric, creased, hv);
     InpaintParams at_scale = inpaint;
     at_scale.detail = hv.detail;
     if (at_scale.detail_scale <= 0) at_scale.detail_scale = hv.detail_scale;
     SetContinuations(hv, Inpaint(hv.image, hv.mask, at_scale));
     if (params.exemplar && params.inpaint.backend == "embedded") AddExemplars(hv, at_scale);
-    if (params.tri_laplacian) {
-      PatchFill faired = TriLaplacianPatch(hi);
-      if (faired.problem.empty()) {
-        hv.variations.push_back(SurfaceImage(hi, faired.points, params));
-        hv.kinds.push_back("tri-laplacian");
-        hv.surfaces.push_back(std::move(faired.points));
-      }
+    if (continued) {
+      hv.variations.push_back(SurfaceImage(hi, faired.points, params));
+      hv.kinds.push_back("tri-laplacian");
+      hv.surfaces.push_back(std::move(faired.points));
     }
     if (symmetric) {
       const QImage image = SurfaceImage(hi, mirror.points, params);

@@ -122,10 +122,10 @@ inline bool FairFreeVertices(std::vector<Eigen::Vector3d>& points,
                              const std::vector<char>& is_free,
                              const HoleFairingParams& params = {}) {
   const int n = int(points.size());
-  std::vector<int> unknown(n, -1), free;
+  std::vector<int> unknown(n, -1), free_vertices;
   for (int v = 0; v < n; ++v)
-    if (is_free[v]) unknown[v] = int(free.size()), free.push_back(v);
-  const int nu = int(free.size());
+    if (is_free[v]) unknown[v] = int(free_vertices.size()), free_vertices.push_back(v);
+  const int nu = int(free_vertices.size());
   if (nu == 0) return true;
   const std::vector<Eigen::Vector3d> unfaired(points);
 
@@ -149,7 +149,7 @@ inline bool FairFreeVertices(std::vector<Eigen::Vector3d>& points,
     for (int u = 0; u < nu; ++u) {
       // One sparse vector-matrix product per power; W is symmetric, so its rows are its
       // columns.
-      row.assign(1, {free[u], 1.0});
+      row.assign(1, {free_vertices[u], 1.0});
       for (int power = 0; power < params.order; ++power) {
         for (const auto& kv : row) {
           const double s = power == 0 ? kv.second : kv.second / std::max(mass[kv.first], 1e-300);
@@ -186,7 +186,8 @@ inline bool FairFreeVertices(std::vector<Eigen::Vector3d>& points,
     }
     const double step = iteration == 0 ? 1.0 : params.over_relaxation;
     for (int u = 0; u < nu; ++u)
-      points[free[u]] += step * (Eigen::Vector3d(x.row(u).transpose()) - points[free[u]]);
+      points[free_vertices[u]] +=
+          step * (Eigen::Vector3d(x.row(u).transpose()) - points[free_vertices[u]]);
   }
   return true;
 }
