@@ -192,12 +192,18 @@ PatchDeformation DeformPatch(const HoleImage& hi, const QImage& target_image,
   moved = hi.patch.points;
   vcg_ext::DeformationResult& dr = out.result;
   if (params.mode == "direct") {
-    // The image's curvature comes from APSS fits several rings wide, the solve's from the
-    // cotangent Laplacian: give the solve the coarse patch's own discrete curvature plus the
-    // change the inpainted image asks for, so an unchanged image leaves it unchanged.
-    std::vector<double> h = vcg_ext::DiscreteMeanCurvature(hi.patch.points, hi.patch.triangles);
-    for (size_t i = 0; i < h.size(); ++i) h[i] += 2 * hi.scale * (target[i] - hi.value[i]);
-    dr = vcg_ext::DeformToCurvatureDirect(moved, hi.patch.triangles, free, h, params.direct);
+    // A round that folds a triangle or makes the fill cross the patch is not taken: the
+    // back-off below would have to undo the rounds before it too.
+    int crossings = -1; // the coarse fill's own, counted when a round asks
+    auto unbroken = [&](const std::vector<Eigen::Vector3d>& p) {
+      if (Folded(hi.patch.points, p, hi.patch) > 0) return false;
+      if (crossings < 0)
+        crossings =
+            vcg_ext::CountSelfIntersections(hi.patch.points, hi.patch.triangles, hi.patch.is_fill);
+      return vcg_ext::CountSelfIntersections(p, hi.patch.triangles, hi.patch.is_fill) <= crossings;
+    };
+    dr = vcg_ext::DeformToCurvatureImage(moved, hi.patch.triangles, free, target, hi.value,
+                                         hi.scale, params.images.apss, params.direct, unbroken);
   } else {
     dr = vcg_ext::DeformToCurvaturePaper(moved, hi.patch.triangles, free, target, hi.scale,
                                          params.paper);
@@ -843,6 +849,8 @@ void CheckHoleFillParams(const HoleFillParams& p) {
   CheckInpaintParams(p.inpaint);
   RequireRange(p.pick, 0, 10, "the variation to use");
   RequireRange(p.direct.iterations, 1, 100, "the deformation solves");
+  RequireRange(p.direct.apss_passes, 0, 20, "the curvature passes");
+  RequireRange(p.direct.apss_gain, 1e-3, 1, "the curvature passes' gain");
   RequireRange(p.paper.similitude, 0, 255, "the similitude");
   RequireRange(p.paper.transformation_constant, 0, 1, "the transformation constant");
   RequireRange(p.paper.max_iterations, 1, 100000, "the deformation steps");

@@ -326,6 +326,19 @@ class DetailAndValidation(TempDirTest):
         self.assertTrue(all(len(set(continuations(h))) == 1 for h in holes0), holes0)
         self.assertTrue(any(len(set(continuations(h))) > 1 for h in holes2), holes2)
 
+    def test_curvature_passes_change_the_deformation(self):
+        n = len(read_binary_ply_xyz(self.SAMPLE))
+        once, _, _ = self.fill("--detail", "2")
+        passes, holes, _ = self.fill("--detail", "2", "--curvature-passes", "3")
+        self.assertEqual(once[:n], passes[:n])  # the scan as it was, both times
+        moved = max(max(abs(a - b) for a, b in zip(p, q)) for p, q in zip(once[n:], passes[n:]))
+        self.assertGreater(moved, 1e-5)
+        self.assertTrue(all(not h.get("problem") for h in holes), holes)
+        r = run([TOOL, "fill", self.SAMPLE, self.path("x.ply"), "--curvature-passes", "21"])
+        self.assertNotEqual(r.returncode, 0)
+        self.assertIn("curvature passes", r.stderr)
+        self.assertFalse(os.path.exists(self.path("x.ply")))
+
     def test_fake_holes_choose_and_the_log_says_how(self):
         _, holes, log = self.fill()
         self.assertEqual(len(holes), 3)

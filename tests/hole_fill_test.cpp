@@ -75,23 +75,29 @@ HoleFillParams SmallImages() {
   return p;
 }
 
-TEST(GroundTruthOracle, TheFillBringsBackEveryBumpOfTheTruth) {
-  CMeshO truth, m;
-  MakeBumpySphere(truth);
+/// `truth` holed through three bumps into `m` and filled with `p`, deformed to the truth's own
+/// curvature images (the oracle).
+curvature_inpaint::HoleFillResult FillFromTheTruth(const CMeshO& truth, HoleFillParams p,
+                                                   CMeshO& m) {
   curvature_inpaint::CopyMesh(truth, m);
   PunchThreeBumps(m);
-  const size_t scan_vertices = m.vert.size();
-  HoleFillParams p = SmallImages();
   const curvature_inpaint::GroundTruthOracle oracle(truth, m, p.images);
   p.oracle = &oracle;
+  return FillHoles(m, p);
+}
 
-  CMeshO coarse;
-  curvature_inpaint::CopyMesh(m, coarse);
-  curvature_inpaint::CoarseFill(coarse, p.images.coarse);
+TEST(GroundTruthOracle, TheFillBringsBackEveryBumpOfTheTruth) {
+  CMeshO truth, coarse;
+  MakeBumpySphere(truth);
+  curvature_inpaint::CopyMesh(truth, coarse);
+  PunchThreeBumps(coarse);
+  const size_t scan_vertices = coarse.vert.size();
+  curvature_inpaint::CoarseFill(coarse, SmallImages().images.coarse);
   for (double h : BumpHeights(coarse, scan_vertices))
     EXPECT_LT(h, 0.5 * kBumpHeight) << "the smooth cap should miss the bumps";
 
-  const auto result = FillHoles(m, p);
+  CMeshO m;
+  const auto result = FillFromTheTruth(truth, SmallImages(), m);
   ASSERT_EQ(result.holes.size(), 1u);
   const auto& r = result.holes[0];
   ASSERT_TRUE(r.problem.empty()) << r.problem;
@@ -100,6 +106,29 @@ TEST(GroundTruthOracle, TheFillBringsBackEveryBumpOfTheTruth) {
   EXPECT_GE(r.result_spread / r.truth_spread.truth, 0.8)
       << "image " << r.truth_spread.image << ", target " << r.target_spread << ", result "
       << r.result_spread << ", truth " << r.truth_spread.truth;
+}
+
+TEST(GroundTruthOracle, ApssPassesBringTheFillsCurvatureCloserToTheImage) {
+  CMeshO truth;
+  MakeBumpySphere(truth);
+  std::vector<double> spreads;
+  double target = 0;
+  for (int passes : {0, 3}) {
+    HoleFillParams p = SmallImages();
+    p.direct.apss_passes = passes;
+    CMeshO m;
+    const auto result = FillFromTheTruth(truth, p, m);
+    ASSERT_EQ(result.holes.size(), 1u);
+    const auto& r = result.holes[0];
+    ASSERT_TRUE(r.problem.empty()) << r.problem;
+    for (double h : BumpHeights(m, m.vert.size() - size_t(r.new_vertices)))
+      EXPECT_NEAR(h, kBumpHeight, 0.1 * kBumpHeight) << passes << " passes";
+    spreads.push_back(r.result_spread);
+    target = r.target_spread;
+  }
+  EXPECT_LT(std::abs(spreads[1] - target), 0.5 * std::abs(spreads[0] - target))
+      << "the fill's curvature spread without the passes " << spreads[0] << ", with " << spreads[1]
+      << ", the image's at the fill " << target;
 }
 
 TEST(Detail, TheAmplitudeChangesTheFillAndZeroIsTheSmoothContinuation) {

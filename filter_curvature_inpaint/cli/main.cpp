@@ -33,7 +33,7 @@ const char* const kUsage =
     "                   [--images DIR] [--report FILE.json] [--from-images DIR] [--context C]\n"
     "                   [--fake-holes K] [--fake-hole-size PX] [--detail A] [--density D]\n"
     "                   [--no-symmetry] [--exemplar] [--no-creases] [--no-tri-laplacian]\n"
-    "                   [--oracle GT]\n"
+    "                   [--curvature-passes N] [--oracle GT]\n"
     "      The main job: fill every hole of IN with detail (coarse fill, curvature images,\n"
     "      inpainting, deformation to the chosen variation) and write OUT. --pick auto (default)\n"
     "      takes the validated (or best-scored) variation; --pick KIND the first variation of\n"
@@ -56,6 +56,10 @@ const char* const kUsage =
     "      Every hole also gets its fill faired to continue the curvature around it, not only\n"
     "      its tangents (a tri-Laplacian; validated); --no-tri-laplacian leaves it out.\n"
     "      --density D: the fill's vertex density (Liepa's alpha; default 2, coarse 1.41).\n"
+    "      --curvature-passes N (direct mode, default 0): after the first deformation, up to\n"
+    "      N more rounds, each asking for half of what the result's curvature, measured as\n"
+    "      the image was painted, still lacks of the image's (a round that comes no closer\n"
+    "      to the image, or folds the fill, is not taken).\n"
     "      --oracle GT (benchmarks): deform to the curvature image painted from GT, the mesh\n"
     "      before its holes were cut: the best any inpainter can do with this deformation.\n"
     "  curvature-inpaint coarse IN OUT [--max-hole-edges N] [--max-hole-diameter F]\n"
@@ -311,6 +315,7 @@ curvature_inpaint::HoleFillParams ReadFillOptions(Args& args) {
   p.validation.fake_holes =
       int(args.Integer("--fake-holes", detail_given ? 0 : p.validation.fake_holes, 0));
   p.validation.image_size = int(args.Integer("--fake-hole-size", p.validation.image_size, 16));
+  p.direct.apss_passes = int(args.Integer("--curvature-passes", p.direct.apss_passes, 0));
   p.symmetry.enabled = !args.Flag("--no-symmetry");
   p.exemplar = args.Flag("--exemplar");
   p.creases = !args.Flag("--no-creases");
