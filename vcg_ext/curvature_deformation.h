@@ -208,13 +208,11 @@ DeformToCurvatureImage(std::vector<Eigen::Vector3d>& points,
     for (size_t q = 0; q < query.size(); ++q)
       h_next[size_t(query[q])] += params.apss_gain * 2 * scale * missing[q];
     const std::vector<Eigen::Vector3d> last = points;
-    const std::vector<double> last_missing = missing;
     const DeformationResult round =
         DeformToCurvatureDirect(points, triangles, free, h_next, params);
     const double now = round.solved ? measure(points) : residual;
     if (!round.solved || !(now < residual) || !acceptable(points)) {
       points = last;
-      missing = last_missing;
       break;
     }
     h = h_next;
