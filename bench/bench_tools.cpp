@@ -328,7 +328,7 @@ int Render(const std::string& in, const std::string& png, const Point3m& center,
     }
     for (size_t v = 0; v < m.vert.size(); ++v)
       if (index[v] >= 0 && std::isfinite(h[size_t(index[v])]))
-        value[v] = std::max(0.0, std::min(1.0, 0.5 + 0.5 * h[size_t(index[v])] / curvature_scale));
+        value[v] = vcg_ext::CurvatureColormap::Value(h[size_t(index[v])], curvature_scale);
   }
   std::vector<const CFaceO*> near;
   const bool view_given = view.Norm() > 0;

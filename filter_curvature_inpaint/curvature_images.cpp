@@ -2,6 +2,7 @@
 
 #include "pipeline.h"
 
+#include <vcg_ext/curvature_colormap.h>
 #include <vcg_ext/parallel_for.h>
 
 #include <QColor>
@@ -73,7 +74,7 @@ void BuildHoleImage(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vcg_e
   out.value.resize(out.curvature.size());
   for (size_t v = 0; v < out.curvature.size(); ++v)
     out.value[v] = std::isfinite(out.curvature[v])
-                       ? std::max(0.0, std::min(1.0, 0.5 + 0.5 * out.curvature[v] / out.scale))
+                       ? vcg_ext::CurvatureColormap::Value(out.curvature[v], out.scale)
                        : 0.5;
 
   out.uv = vcg_ext::ParameterizeMvc(out.patch.points, out.patch.triangles, out.patch.boundary);

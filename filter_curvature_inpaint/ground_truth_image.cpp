@@ -199,7 +199,7 @@ GroundTruthImage GroundTruthOracle::Image(const HoleImage& hi) const {
   const std::vector<double> h = vcg_ext::ApssMeanCurvature(support, normals, query, params_.apss);
   std::vector<double> value(h.size(), 0.5);
   for (size_t i = 0; i < h.size(); ++i)
-    if (std::isfinite(h[i])) value[i] = std::max(0.0, std::min(1.0, 0.5 + 0.5 * h[i] / hi.scale));
+    if (std::isfinite(h[i])) value[i] = vcg_ext::CurvatureColormap::Value(h[i], hi.scale);
   const auto img = vcg_ext::RasterizeCurvature(uv.uv, value, tris, is_fill, hi.image.size);
   out.image = ToQImage(img, false);
 

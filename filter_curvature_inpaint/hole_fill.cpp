@@ -140,30 +140,48 @@ QImage FinalCurvatureImage(const HoleImage& hi, const std::vector<Eigen::Vector3
   const auto h = PatchCurvature(points, hi.patch.triangles, apss);
   std::vector<double> value(h.size(), 0.5);
   for (size_t i = 0; i < h.size(); ++i)
-    if (std::isfinite(h[i])) value[i] = std::max(0.0, std::min(1.0, 0.5 + 0.5 * h[i] / hi.scale));
+    if (std::isfinite(h[i])) value[i] = vcg_ext::CurvatureColormap::Value(h[i], hi.scale);
   return ToQImage(vcg_ext::RasterizeCurvature(hi.uv.uv, value, hi.patch.triangles, hi.patch.is_fill,
                                               hi.image.size),
                   false);
 }
 
+/// Whether the patch with its fill moved folds a fill triangle over or makes the fill cross
+/// the patch; crossings the coarse fill already had do not count (counted once, when first
+/// needed).
+class FoldCheck {
+public:
+  explicit FoldCheck(const vcg_ext::PatchMesh& patch) : patch_(patch) {}
+  bool Broken(const std::vector<Eigen::Vector3d>& moved) {
+    if (Folded(patch_.points, moved, patch_) > 0) return true;
+    if (crossings_before_ < 0)
+      crossings_before_ =
+          vcg_ext::CountSelfIntersections(patch_.points, patch_.triangles, patch_.is_fill);
+    return vcg_ext::CountSelfIntersections(moved, patch_.triangles, patch_.is_fill) >
+           crossings_before_;
+  }
+
+private:
+  const vcg_ext::PatchMesh& patch_;
+  int crossings_before_ = -1;
+};
+
 /// Backs `moved` (the patch with its fill moved) off towards the coarse fill, halving the way,
-/// while it folds a triangle over or makes the fill cross the patch (crossings the coarse fill
-/// already had do not count). Returns the halvings, or -1 when four did not undo it.
-int BackOff(const vcg_ext::PatchMesh& patch, std::vector<Eigen::Vector3d>& moved) {
-  const int crossings_before =
-      vcg_ext::CountSelfIntersections(patch.points, patch.triangles, patch.is_fill);
-  auto broken = [&] {
-    return Folded(patch.points, moved, patch) > 0 ||
-           vcg_ext::CountSelfIntersections(moved, patch.triangles, patch.is_fill) >
-               crossings_before;
-  };
+/// while `check` finds it broken. Returns the halvings, or -1 when four did not undo it.
+int BackOff(const vcg_ext::PatchMesh& patch, std::vector<Eigen::Vector3d>& moved,
+            FoldCheck& check) {
   int halvings = 0;
-  for (; broken(); ++halvings) {
+  for (; check.Broken(moved); ++halvings) {
     if (halvings == 4) return -1;
     for (size_t i = 0; i < moved.size(); ++i)
       moved[i] = patch.points[i] + 0.5 * (moved[i] - patch.points[i]);
   }
   return halvings;
+}
+
+int BackOff(const vcg_ext::PatchMesh& patch, std::vector<Eigen::Vector3d>& moved) {
+  FoldCheck check(patch);
+  return BackOff(patch, moved, check);
 }
 
 /// The colour-map value of `image` at each fill vertex of the patch (0.5 elsewhere).
@@ -191,25 +209,19 @@ PatchDeformation DeformPatch(const HoleImage& hi, const QImage& target_image,
   std::vector<Eigen::Vector3d>& moved = out.points;
   moved = hi.patch.points;
   vcg_ext::DeformationResult& dr = out.result;
+  FoldCheck check(hi.patch); // the rounds' and the back-off's: the coarse crossings counted once
   if (params.mode == "direct") {
     // A round that folds a triangle or makes the fill cross the patch is not taken: the
     // back-off below would have to undo the rounds before it too.
-    int crossings = -1; // the coarse fill's own, counted when a round asks
-    auto unbroken = [&](const std::vector<Eigen::Vector3d>& p) {
-      if (Folded(hi.patch.points, p, hi.patch) > 0) return false;
-      if (crossings < 0)
-        crossings =
-            vcg_ext::CountSelfIntersections(hi.patch.points, hi.patch.triangles, hi.patch.is_fill);
-      return vcg_ext::CountSelfIntersections(p, hi.patch.triangles, hi.patch.is_fill) <= crossings;
-    };
-    dr = vcg_ext::DeformToCurvatureImage(moved, hi.patch.triangles, free, target, hi.value,
-                                         hi.scale, params.images.apss, params.direct, unbroken);
+    dr = vcg_ext::DeformToCurvatureImage(
+        moved, hi.patch.triangles, free, target, hi.value, hi.scale, params.images.apss,
+        params.direct, [&](const std::vector<Eigen::Vector3d>& p) { return !check.Broken(p); });
   } else {
     dr = vcg_ext::DeformToCurvaturePaper(moved, hi.patch.triangles, free, target, hi.scale,
                                          params.paper);
   }
   if (dr.solved) {
-    out.backoffs = BackOff(hi.patch, moved);
+    out.backoffs = BackOff(hi.patch, moved, check);
     if (out.backoffs < 0) dr.solved = false, out.backoffs = 4;
   }
   return out;

@@ -94,7 +94,7 @@ TEST(CurvatureDeformation, ImageRoundsComeCloserToTheImageOrAreNotTaken) {
         p, vcg_ext::detail::VertexNormals(p, fp.patch.triangles), all, apss);
     std::vector<double> v(h.size(), 0.5);
     for (size_t i = 0; i < h.size(); ++i)
-      if (std::isfinite(h[i])) v[i] = std::max(0.0, std::min(1.0, 0.5 + 0.5 * h[i] / scale));
+      if (std::isfinite(h[i])) v[i] = vcg_ext::CurvatureColormap::Value(h[i], scale);
     return v;
   };
   // The image asks for a sphere of 0.8 times the radius where the coarse fill is.

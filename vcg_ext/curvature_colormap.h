@@ -29,6 +29,12 @@ public:
     return knots;
   }
 
+  /// The colour-map value of signed mean curvature h where `scale` maps to the map's ends:
+  /// 0.5 + 0.5 h / scale, clamped to [0, 1] (convex, negative h, towards blue).
+  static double Value(double h, double scale) {
+    return std::max(0.0, std::min(1.0, 0.5 + 0.5 * h / scale));
+  }
+
   /// The colour of t in [0, 1] (clamped), as exact RGB in [0, 255].
   static Eigen::Vector3d Color(double t) {
     const auto& k = Knots();

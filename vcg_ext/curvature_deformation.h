@@ -194,9 +194,8 @@ DeformToCurvatureImage(std::vector<Eigen::Vector3d>& points,
         ApssMeanCurvature(p, detail::VertexNormals(p, triangles), query, apss);
     double sum = 0;
     for (size_t q = 0; q < query.size(); ++q) {
-      const double now = std::isfinite(h_now[q])
-                             ? std::max(0.0, std::min(1.0, 0.5 + 0.5 * h_now[q] / scale))
-                             : target_value[size_t(query[q])];
+      const double now = std::isfinite(h_now[q]) ? CurvatureColormap::Value(h_now[q], scale)
+                                                 : target_value[size_t(query[q])];
       missing[q] = target_value[size_t(query[q])] - now;
       sum += missing[q] * missing[q];
     }
@@ -272,7 +271,7 @@ inline DeformationResult DeformToCurvaturePaper(std::vector<Eigen::Vector3d>& po
     int differing = 0;
     for (size_t i = 0; i < points.size(); ++i) {
       if (!steers[i] || !std::isfinite(h[i])) continue;
-      const double value = std::max(0.0, std::min(1.0, 0.5 + 0.5 * h[i] / scale));
+      const double value = CurvatureColormap::Value(h[i], scale);
       const Eigen::Vector3d diff =
           CurvatureColormap::Color(target_value[i]) - CurvatureColormap::Color(value);
       if (diff.cwiseAbs().maxCoeff() <= params.similitude) continue;
