@@ -1,5 +1,6 @@
 // Measurement tools for the benchmark (not part of the product):
-//   bench_tools metrics GROUND_TRUTH INPUT RESULT   distances in and around the filled region
+//   bench_tools metrics GROUND_TRUTH INPUT RESULT   distances, detail and crease sharpness in
+//                                                   the filled region
 //   bench_tools subdivide IN OUT                    one midpoint (1-to-4) subdivision
 //   bench_tools kept INPUT RESULT                   input vertices the result moved
 //   bench_tools render MESH PNG CX CY CZ R [VX VY VZ [CURVATURE_SCALE]]
@@ -117,6 +118,72 @@ double CurvatureSpread(CMeshO& from, Surface& reference, double tol) {
   return curvature_inpaint::Spread(vcg_ext::ApssMeanCurvature(points, normals, query));
 }
 
+// The creases of the ground truth's hole region and how sharp the result keeps them. A crease
+// edge is one whose two faces' normals part by more than 30 degrees, one of them in the region
+// (off `input`). Its dihedral angle is read on both meshes alike: the normals of the closest
+// faces at two probes, `probe` away from the edge's midpoint into each of its faces, so a
+// smooth cap that rounds the crease over a band reads a smaller angle, and a crease carried as
+// a row of leaning triangles narrower than the probe reads the whole one.
+struct CreaseSharpness {
+  int edges = 0;        ///< crease edges of the ground truth in the hole region
+  double truth_deg = 0; ///< their mean dihedral angle on the ground truth (length-weighted)
+  double error_deg = 0; ///< mean |truth - result| of the dihedral angle (length-weighted)
+};
+
+CreaseSharpness MeasureCreases(Surface& gt, Surface& input, Surface& result, double tol) {
+  CMeshO& m = gt.m;
+  std::map<std::pair<int, int>, std::vector<int>> edge_faces;
+  std::vector<char> in_region(m.face.size(), 0);
+  double length_sum = 0;
+  int length_count = 0;
+  for (int f = 0; f < int(m.face.size()); ++f) {
+    const auto& face = m.face[size_t(f)];
+    in_region[size_t(f)] = input.Distance((face.cP(0) + face.cP(1) + face.cP(2)) / 3) > tol;
+    for (int k = 0; k < 3; ++k) {
+      const int a = int(vcg::tri::Index(m, face.cV(k))),
+                b = int(vcg::tri::Index(m, face.cV((k + 1) % 3)));
+      edge_faces[{std::min(a, b), std::max(a, b)}].push_back(f);
+      if (in_region[size_t(f)])
+        length_sum += vcg::Distance(face.cP(k), face.cP((k + 1) % 3)), ++length_count;
+    }
+  }
+  CreaseSharpness out;
+  if (length_count == 0) return out;
+  const double probe = length_sum / length_count;
+  const double cos_crease = std::cos(30 * M_PI / 180);
+  double weight = 0;
+  for (const auto& edge_and_faces : edge_faces) {
+    const auto& edge = edge_and_faces.first;
+    const auto& faces = edge_and_faces.second;
+    if (faces.size() != 2 || !(in_region[size_t(faces[0])] || in_region[size_t(faces[1])]))
+      continue;
+    const auto &f0 = m.face[size_t(faces[0])], &f1 = m.face[size_t(faces[1])];
+    if (double(f0.cN() * f1.cN()) > cos_crease) continue;
+    const Point3m a = m.vert[size_t(edge.first)].cP(), b = m.vert[size_t(edge.second)].cP();
+    const Point3m mid = (a + b) / 2, along = (b - a).Normalize();
+    double angle[2];
+    Surface* surfaces[2] = {&gt, &result};
+    for (int s = 0; s < 2; ++s) {
+      Point3m normal[2];
+      for (int i = 0; i < 2; ++i) {
+        const auto& f = i == 0 ? f0 : f1;
+        Point3m inward = (f.cP(0) + f.cP(1) + f.cP(2)) / 3 - mid;
+        inward -= along * (inward * along);
+        surfaces[s]->Distance(mid + inward.Normalize() * Scalarm(probe), &normal[i]);
+      }
+      angle[s] =
+          std::acos(std::max(-1.0, std::min(1.0, double(normal[0] * normal[1])))) * 180 / M_PI;
+    }
+    const double w = vcg::Distance(a, b);
+    out.truth_deg += w * angle[0];
+    out.error_deg += w * std::abs(angle[0] - angle[1]);
+    weight += w;
+    ++out.edges;
+  }
+  if (weight > 0) out.truth_deg /= weight, out.error_deg /= weight;
+  return out;
+}
+
 void PrintStats(const char* name, const std::vector<double>& d, double diag) {
   double mx = 0, sum = 0, sq = 0;
   for (double x : d) mx = std::max(mx, x), sum += x, sq += x * x;
@@ -145,15 +212,18 @@ int Metrics(const std::string& gt_path, const std::string& input_path,
   const double spread_fill = CurvatureSpread(result.m, input, tol);
   const double spread_gt = CurvatureSpread(gt.m, input, tol);
   const auto census = curvature_inpaint::CountHoles(result.m);
+  const CreaseSharpness creases = MeasureCreases(gt, input, result, tol);
   std::printf("{");
   PrintStats("gt_to_result", gt_to_result, diag);
   std::printf(", ");
   PrintStats("result_to_gt", result_to_gt, diag);
   std::printf(", \"normal_deviation_deg\": %.3f, \"holes_left\": %zu, \"non_manifold_edges\": %zu, "
-              "\"filled_samples\": %zu, \"detail_ratio\": %.3f}\n",
+              "\"filled_samples\": %zu, \"detail_ratio\": %.3f, \"crease_edges\": %d, "
+              "\"crease_angle_deg\": %.2f, \"crease_angle_error_deg\": %.2f}\n",
               normal_dev / std::max<size_t>(fill_region.points.size(), 1), census.loop_edges.size(),
               census.non_manifold_edges, fill_region.points.size(),
-              spread_gt > 0 ? spread_fill / spread_gt : 0.0);
+              spread_gt > 0 ? spread_fill / spread_gt : 0.0, creases.edges, creases.truth_deg,
+              creases.error_deg);
   return 0;
 }
 

@@ -6,12 +6,14 @@
 #include "symmetric_egg.h"
 
 #include <vcg/complex/algorithms/create/platonic.h>
+#include <vcg/simplex/face/distance.h>
 #include <vcg_ext/punch_hole.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace {
@@ -458,6 +460,27 @@ TEST(Creases, AHoleOnACubesEdgeAndOneOnItsCornerComeBackSharp) {
     EXPECT_GT(std::abs(n[face_axis]), std::cos(5 * M_PI / 180));
   }
   EXPECT_GT(on_a_face, 2 * straddling) << straddling << " of " << on_a_face + straddling;
+  // The edge is as sharp as the cube's: the faces nearest two points a third of the grid's
+  // spacing off it, one on each side, meet at its 90 degrees (a chamfer of fill triangles
+  // that straddle the edge, one fill edge wide, would read about 45).
+  vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
+  auto nearest_face_normal = [&m](const Point3m& q) {
+    Scalarm best = std::numeric_limits<Scalarm>::max();
+    Point3m normal(0, 0, 0);
+    for (const auto& f : m.face) {
+      Scalarm d = best;
+      Point3m closest;
+      if (vcg::face::PointDistanceBase(f, q, d, closest) && d < best) best = d, normal = f.cN();
+    }
+    return normal;
+  };
+  const Scalarm off = Scalarm(2.0 / 24 / 3);
+  for (Scalarm x : {Scalarm(0.1), Scalarm(0.2), Scalarm(0.3)}) {
+    const Point3m a = nearest_face_normal(Point3m(x, 1, 1 - off));
+    const Point3m b = nearest_face_normal(Point3m(x, 1 - off, 1));
+    EXPECT_NEAR(std::acos(std::max(-1.0, std::min(1.0, double(a * b)))) * 180 / M_PI, 90, 5)
+        << "at x = " << x;
+  }
 }
 
 /// An ellipsoid (semi-axes 1, 0.7, 0.5) and a point's distance to it (first order).

@@ -2,7 +2,8 @@
 // the hole is split at its sharp edges into smooth regions (a machined part's faces), each
 // region is fitted with a quadric height field, and every fill vertex is moved onto the
 // solid those surfaces bound (across a convex crease the intersection of the two faces'
-// solids, across a concave one their union). Where two regions' surfaces meet, the crease comes
+// solids, across a concave one their union), and the fill vertices nearest a crease onto its
+// line, so that fill edges run along it. Where two regions' surfaces meet, the crease comes
 // back straight and sharp as the extension of both; where three meet, a corner. A smooth cap
 // (Liepa, CGAL, MeshLab) rounds them away.
 #pragma once
@@ -213,12 +214,17 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
   // onto that one, which alternates onto the crease's line, or a corner where three meet.
   out.points = points;
   const double eps = 1e-9 * std::max(1.0, radius);
-  for (size_t i = 0; i < points.size(); ++i) {
-    if (!free[i]) continue;
-    Eigen::Vector3d p = points[i];
+  auto nearest_face = [&](const Eigen::Vector3d& p) {
     size_t on = 0;
     for (size_t k = 1; k < nr; ++k)
       if (std::abs(fields[k].Offset(p)) < std::abs(fields[on].Offset(p))) on = k;
+    return on;
+  };
+  std::vector<size_t> face_of(points.size(), nr); // the face a fill vertex ended on
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (!free[i]) continue;
+    Eigen::Vector3d p = points[i];
+    size_t on = nearest_face(p);
     p -= fields[on].Offset(p) * fields[on].n;
     for (int it = 0; it < 64; ++it) {
       size_t worst = nr;
@@ -234,6 +240,66 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
       on = worst;
     }
     out.points[i] = p;
+    face_of[i] = on;
+  }
+
+  // The fill's triangles do not follow the crease: an edge whose ends lie on two faces that
+  // meet there cuts the crease off as a chamfer one edge wide, which reads as a rounded edge
+  // at the scan's scale. Of each such edge, the end nearer the other face goes onto the
+  // crease's line, so the line runs along fill edges and the chamfers close. A vertex moves
+  // once, and not where a triangle around it would turn over or lose its area (the caller
+  // would back the whole fill off for one fold).
+  std::vector<char> on_line(points.size(), 0);
+  std::vector<std::vector<int>> fill_triangles_of(points.size());
+  for (size_t t = 0; t < nt; ++t)
+    if (is_fill[t])
+      for (int v : triangles[t]) fill_triangles_of[size_t(v)].push_back(int(t));
+  // Whether vertex v at q keeps every fill triangle around it facing as in the coarse fill,
+  // with some area (three vertices on one line would make none).
+  auto keeps_triangles_facing = [&](size_t v, const Eigen::Vector3d& q) {
+    for (int t : fill_triangles_of[v]) {
+      std::array<Eigen::Vector3d, 3> p;
+      for (int k = 0; k < 3; ++k) {
+        const size_t w = size_t(triangles[size_t(t)][size_t(k)]);
+        p[size_t(k)] = w == v ? q : out.points[w];
+      }
+      const Eigen::Vector3d after = (p[1] - p[0]).cross(p[2] - p[0]);
+      if (!(after.norm() > 1e-3 * (p[1] - p[0]).squaredNorm()) ||
+          !(after.dot(normal[size_t(t)]) > 0))
+        return false;
+    }
+    return true;
+  };
+  // A border vertex is on the face it lies nearest to.
+  auto face_of_vertex = [&](size_t v) { return free[v] ? face_of[v] : nearest_face(points[v]); };
+  for (size_t t = 0; t < nt; ++t) {
+    if (!is_fill[t]) continue;
+    for (int k = 0; k < 3; ++k) {
+      const size_t a = size_t(triangles[t][size_t(k)]),
+                   b = size_t(triangles[t][size_t((k + 1) % 3)]);
+      if (on_line[a] || on_line[b]) continue;
+      if (!free[a] && !free[b]) continue;
+      const size_t fa = face_of_vertex(a), fb = face_of_vertex(b);
+      if (fa == fb || sense[fa * nr + fb] == 0) continue;
+      const size_t moved = !free[b] || (free[a] && std::abs(fields[fb].Offset(out.points[a])) <=
+                                                       std::abs(fields[fa].Offset(out.points[b])))
+                               ? a
+                               : b;
+      Eigen::Vector3d p = out.points[moved];
+      // The nearest point of both faces' surfaces: Newton steps on the two offsets.
+      for (int it = 0; it < 8; ++it) {
+        Eigen::Matrix<double, 2, 3> n;
+        n.row(0) = fields[fa].n.transpose(), n.row(1) = fields[fb].n.transpose();
+        const Eigen::Vector2d r(fields[fa].Offset(p), fields[fb].Offset(p));
+        const Eigen::Matrix2d gram = n * n.transpose();
+        if (std::abs(gram.determinant()) < 1e-12) break; // parallel faces: no line
+        p -= n.transpose() * gram.inverse() * r;
+        if (r.norm() < eps) break;
+      }
+      if (!keeps_triangles_facing(moved, p)) continue;
+      out.points[moved] = p;
+      on_line[moved] = 1;
+    }
   }
   return out;
 }
