@@ -65,16 +65,30 @@ struct Samples {
   std::vector<Point3m> normals;
 };
 
-// Area-weighted random points on the faces of `from` that lie off `reference` (the region a
-// fill covers: faces of the ground truth the input lacks, or faces the filler added).
-Samples SampleRegion(CMeshO& from, Surface& reference, double tol, int count) {
+// Per face of `from`, whether it lies off `reference` (its centre farther than tol): the region
+// a fill covers, faces of the ground truth the input lacks, or faces the filler added.
+std::vector<char> RegionFaces(CMeshO& from, Surface& reference, double tol) {
+  std::vector<char> in_region(from.face.size(), 0);
+  for (size_t f = 0; f < from.face.size(); ++f) {
+    const auto& face = from.face[f];
+    in_region[f] = reference.Distance((face.cP(0) + face.cP(1) + face.cP(2)) / 3) > tol;
+  }
+  return in_region;
+}
+
+// The angle between two unit normals, in degrees.
+double AngleDegrees(const Point3m& a, const Point3m& b) {
+  return std::acos(std::max(-1.0, std::min(1.0, double(a * b)))) * 180 / M_PI;
+}
+
+// Area-weighted random points on the region's faces.
+Samples SampleRegion(CMeshO& from, const std::vector<char>& in_region, int count) {
   std::vector<int> region;
   std::vector<double> cumulative;
   double total = 0;
   for (int f = 0; f < int(from.face.size()); ++f) {
     const auto& face = from.face[f];
-    const Point3m c = (face.cP(0) + face.cP(1) + face.cP(2)) / 3;
-    if (reference.Distance(c) <= tol) continue;
+    if (!in_region[size_t(f)]) continue;
     total += vcg::DoubleArea(face) / 2;
     region.push_back(f);
     cumulative.push_back(total);
@@ -94,15 +108,16 @@ Samples SampleRegion(CMeshO& from, Surface& reference, double tol, int count) {
   return s;
 }
 
-// The spread (standard deviation) of the APSS mean curvature over the vertices of the faces
-// of `from` that lie off `reference`: how much detail a region has.
-double CurvatureSpread(CMeshO& from, Surface& reference, double tol) {
+// The spread (standard deviation) of the APSS mean curvature over the vertices of the
+// region's faces: how much detail a region has.
+double CurvatureSpread(CMeshO& from, const std::vector<char>& region_faces) {
   std::vector<char> in_region(from.vert.size(), 0);
   Box3m box;
-  for (auto& f : from.face) {
-    const Point3m c = (f.cP(0) + f.cP(1) + f.cP(2)) / 3;
-    if (reference.Distance(c) <= tol) continue;
-    for (int k = 0; k < 3; ++k) in_region[vcg::tri::Index(from, f.V(k))] = 1, box.Add(f.cP(k));
+  for (size_t f = 0; f < from.face.size(); ++f) {
+    if (!region_faces[f]) continue;
+    const auto& face = from.face[f];
+    for (int k = 0; k < 3; ++k)
+      in_region[vcg::tri::Index(from, face.cV(k))] = 1, box.Add(face.cP(k));
   }
   if (box.IsNull()) return 0;
   box.Offset(box.Diag() * 0.2f);
@@ -118,11 +133,11 @@ double CurvatureSpread(CMeshO& from, Surface& reference, double tol) {
   return curvature_inpaint::Spread(vcg_ext::ApssMeanCurvature(points, normals, query));
 }
 
-// The creases of the ground truth's hole region and how sharp the result keeps them. A crease
-// edge is one whose two faces' normals part by more than 30 degrees, one of them in the region
-// (off `input`). Its dihedral angle is read on both meshes alike: the normals of the closest
-// faces at two probes, `probe` away from the edge's midpoint into each of its faces, so a
-// smooth cap that rounds the crease over a band reads a smaller angle, and a crease carried as
+// The creases of the ground truth's hole region (`in_region`, per face of `gt`) and how sharp
+// the result keeps them. A crease edge is one whose two faces' normals part by more than 30
+// degrees, one of them in the region. Its dihedral angle is read on both meshes alike: the normals
+// of the closest faces at two probes, `probe` away from the edge's midpoint into each of its faces,
+// so a smooth cap that rounds the crease over a band reads a smaller angle, and a crease carried as
 // a row of leaning triangles narrower than the probe reads the whole one.
 struct CreaseSharpness {
   int edges = 0;        ///< crease edges of the ground truth in the hole region
@@ -130,15 +145,13 @@ struct CreaseSharpness {
   double error_deg = 0; ///< mean |truth - result| of the dihedral angle (length-weighted)
 };
 
-CreaseSharpness MeasureCreases(Surface& gt, Surface& input, Surface& result, double tol) {
+CreaseSharpness MeasureCreases(Surface& gt, const std::vector<char>& in_region, Surface& result) {
   CMeshO& m = gt.m;
   std::map<std::pair<int, int>, std::vector<int>> edge_faces;
-  std::vector<char> in_region(m.face.size(), 0);
   double length_sum = 0;
   int length_count = 0;
   for (int f = 0; f < int(m.face.size()); ++f) {
     const auto& face = m.face[size_t(f)];
-    in_region[size_t(f)] = input.Distance((face.cP(0) + face.cP(1) + face.cP(2)) / 3) > tol;
     for (int k = 0; k < 3; ++k) {
       const int a = int(vcg::tri::Index(m, face.cV(k))),
                 b = int(vcg::tri::Index(m, face.cV((k + 1) % 3)));
@@ -171,8 +184,7 @@ CreaseSharpness MeasureCreases(Surface& gt, Surface& input, Surface& result, dou
         inward -= along * (inward * along);
         surfaces[s]->Distance(mid + inward.Normalize() * Scalarm(probe), &normal[i]);
       }
-      angle[s] =
-          std::acos(std::max(-1.0, std::min(1.0, double(normal[0] * normal[1])))) * 180 / M_PI;
+      angle[s] = AngleDegrees(normal[0], normal[1]);
     }
     const double w = vcg::Distance(a, b);
     out.truth_deg += w * angle[0];
@@ -198,21 +210,22 @@ int Metrics(const std::string& gt_path, const std::string& input_path,
   const double diag = gt.m.bbox.Diag();
   const double tol = 1e-5 * diag;
   const int count = 20000;
-  const Samples gt_region = SampleRegion(gt.m, input, tol, count);
-  const Samples fill_region = SampleRegion(result.m, input, tol, count);
+  const std::vector<char> gt_faces = RegionFaces(gt.m, input, tol);
+  const std::vector<char> fill_faces = RegionFaces(result.m, input, tol);
+  const Samples gt_region = SampleRegion(gt.m, gt_faces, count);
+  const Samples fill_region = SampleRegion(result.m, fill_faces, count);
   std::vector<double> gt_to_result, result_to_gt;
   double normal_dev = 0;
   for (const auto& p : gt_region.points) gt_to_result.push_back(result.Distance(p));
   for (size_t i = 0; i < fill_region.points.size(); ++i) {
     Point3m n;
     result_to_gt.push_back(gt.Distance(fill_region.points[i], &n));
-    const double c = std::max(-1.0, std::min(1.0, double(n * fill_region.normals[i])));
-    normal_dev += std::acos(c) * 180 / M_PI;
+    normal_dev += AngleDegrees(n, fill_region.normals[i]);
   }
-  const double spread_fill = CurvatureSpread(result.m, input, tol);
-  const double spread_gt = CurvatureSpread(gt.m, input, tol);
+  const double spread_fill = CurvatureSpread(result.m, fill_faces);
+  const double spread_gt = CurvatureSpread(gt.m, gt_faces);
   const auto census = curvature_inpaint::CountHoles(result.m);
-  const CreaseSharpness creases = MeasureCreases(gt, input, result, tol);
+  const CreaseSharpness creases = MeasureCreases(gt, gt_faces, result);
   std::printf("{");
   PrintStats("gt_to_result", gt_to_result, diag);
   std::printf(", ");

@@ -230,9 +230,9 @@ def print_report(rows, split, sweep, variants, oracle, plots):
         # (on scans of organic shapes the 30° edges in a hole are noise and folds, not creases).
         shown = [k for k in ["fill", "coarse", "creases", "cgal", "close"] if k in rows[0]]
         print("\nCreases in the holes of the machined parts (ground-truth edges whose faces part by "
-              "over 30°): their "
-              "dihedral angle on the truth, and each method's mean error of it (degrees, read by "
-              "the closest faces' normals one scan edge to either side) / Hausdorff ratio to CGAL's\n")
+              "over 30°): their dihedral angle on the truth, and each method's mean error of it "
+              "(degrees, read by the closest faces' normals one scan edge to either side) / "
+              "Hausdorff ratio to CGAL's\n")
         print("| hole | crease edges | truth angle | " + " | ".join(shown) + " |")
         print("|" + "---|" * (3 + len(shown)))
         for r in creased:
