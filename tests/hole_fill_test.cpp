@@ -401,6 +401,23 @@ void MakeCube(CMeshO& m, int n) {
   vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
 }
 
+/// The angle between the normals of the faces of `m` nearest `a` and `b` (per-face normals
+/// up to date), in degrees: two points either side of an edge read its dihedral angle.
+double DihedralDegrees(const CMeshO& m, const Point3m& a, const Point3m& b) {
+  auto nearest_face_normal = [&m](const Point3m& q) {
+    Scalarm best = std::numeric_limits<Scalarm>::max();
+    Point3m normal(0, 0, 0);
+    for (const auto& f : m.face) {
+      Scalarm d = best;
+      Point3m closest;
+      if (vcg::face::PointDistanceBase(f, q, d, closest) && d < best) best = d, normal = f.cN();
+    }
+    return normal;
+  };
+  const double c = double(nearest_face_normal(a) * nearest_face_normal(b));
+  return std::acos(std::max(-1.0, std::min(1.0, c))) * 180 / M_PI;
+}
+
 /// Distance of p to the cube's surface.
 double CubeDistance(const Point3m& p) {
   const Eigen::Vector3d q(std::abs(p[0]) - 1, std::abs(p[1]) - 1, std::abs(p[2]) - 1);
@@ -464,23 +481,49 @@ TEST(Creases, AHoleOnACubesEdgeAndOneOnItsCornerComeBackSharp) {
   // spacing off it, one on each side, meet at its 90 degrees (a chamfer of fill triangles
   // that straddle the edge, one fill edge wide, would read about 45).
   vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
-  auto nearest_face_normal = [&m](const Point3m& q) {
-    Scalarm best = std::numeric_limits<Scalarm>::max();
-    Point3m normal(0, 0, 0);
-    for (const auto& f : m.face) {
-      Scalarm d = best;
-      Point3m closest;
-      if (vcg::face::PointDistanceBase(f, q, d, closest) && d < best) best = d, normal = f.cN();
-    }
-    return normal;
-  };
   const Scalarm off = Scalarm(2.0 / 24 / 3);
-  for (Scalarm x : {Scalarm(0.1), Scalarm(0.2), Scalarm(0.3)}) {
-    const Point3m a = nearest_face_normal(Point3m(x, 1, 1 - off));
-    const Point3m b = nearest_face_normal(Point3m(x, 1 - off, 1));
-    EXPECT_NEAR(std::acos(std::max(-1.0, std::min(1.0, double(a * b)))) * 180 / M_PI, 90, 5)
+  for (Scalarm x : {Scalarm(0.1), Scalarm(0.2), Scalarm(0.3)})
+    EXPECT_NEAR(DihedralDegrees(m, Point3m(x, 1, 1 - off), Point3m(x, 1 - off, 1)), 90, 5)
         << "at x = " << x;
-  }
+}
+
+// A hole on a plate's corner takes the whole vertical edge there, top to bottom: no crease edge
+// of the two side faces is left beside it, yet they must meet at that edge, not run on through
+// each other.
+TEST(Creases, AHoleThatTakesAPlatesWholeCornerEdgeBringsItBack) {
+  CMeshO m;
+  MakeCube(m, 24);
+  const Scalarm half_thickness = Scalarm(0.25);
+  for (auto& v : m.vert) v.P()[2] *= half_thickness;
+  vcg_ext::PunchHole(m, Point3m(1, 1, 0), Scalarm(0.4));
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+  const size_t scan_vertices = m.vert.size();
+  auto plate_distance = [&](const Point3m& p) {
+    const Eigen::Vector3d q(std::abs(p[0]) - 1, std::abs(p[1]) - 1,
+                            std::abs(p[2]) - half_thickness);
+    const double outside = q.cwiseMax(0.0).norm();
+    return outside > 0 ? outside : -q.maxCoeff();
+  };
+  HoleFillParams p = SmallImages();
+  p.symmetry.enabled = false;
+  const auto result = FillHoles(m, p);
+  ASSERT_EQ(result.holes.size(), 1u);
+  const auto& r = result.holes[0];
+  ASSERT_TRUE(r.problem.empty()) << r.problem;
+  EXPECT_EQ(r.kind, "creases") << curvature_inpaint::DescribeValidation(
+      r.candidates, r.validation_errors, r.choice, r.fake_holes, r.mirror_fake_holes,
+      r.validation_note);
+  double worst = 0;
+  for (size_t v = scan_vertices; v < m.vert.size(); ++v)
+    worst = std::max(worst, std::abs(plate_distance(m.vert[v].cP())));
+  EXPECT_LT(worst, 0.02) << "a side face runs on through the other";
+  // The edge between the side faces is as sharp as the plate's (the faces nearest two points
+  // a third of the grid's spacing off it read 90 degrees; a chamfer reads about 45).
+  vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
+  const Scalarm off = Scalarm(2.0 / 24 / 3);
+  for (Scalarm z : {Scalarm(-0.1), Scalarm(0), Scalarm(0.1)})
+    EXPECT_NEAR(DihedralDegrees(m, Point3m(1, 1 - off, z), Point3m(1 - off, 1, z)), 90, 5)
+        << "at z = " << z;
 }
 
 /// An ellipsoid (semi-axes 1, 0.7, 0.5) and a point's distance to it (first order).
