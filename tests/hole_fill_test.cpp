@@ -418,11 +418,17 @@ double DihedralDegrees(const CMeshO& m, const Point3m& a, const Point3m& b) {
   return std::acos(std::max(-1.0, std::min(1.0, c))) * 180 / M_PI;
 }
 
-/// Distance of p to the cube's surface.
-double CubeDistance(const Point3m& p) {
-  const Eigen::Vector3d q(std::abs(p[0]) - 1, std::abs(p[1]) - 1, std::abs(p[2]) - 1);
+/// Signed distance of p to the surface of the box [-half, half] (negative inside).
+double BoxDistance(const Point3m& p, const Eigen::Vector3d& half) {
+  const Eigen::Vector3d q(std::abs(p[0]) - half.x(), std::abs(p[1]) - half.y(),
+                          std::abs(p[2]) - half.z());
   const double outside = q.cwiseMax(0.0).norm();
   return outside > 0 ? outside : -q.maxCoeff();
+}
+
+/// Distance of p to the cube's surface.
+double CubeDistance(const Point3m& p) {
+  return BoxDistance(p, Eigen::Vector3d::Ones());
 }
 
 TEST(Creases, AHoleOnACubesEdgeAndOneOnItsCornerComeBackSharp) {
@@ -498,12 +504,6 @@ TEST(Creases, AHoleThatTakesAPlatesWholeCornerEdgeBringsItBack) {
   vcg_ext::PunchHole(m, Point3m(1, 1, 0), Scalarm(0.4));
   vcg::tri::UpdateBounding<CMeshO>::Box(m);
   const size_t scan_vertices = m.vert.size();
-  auto plate_distance = [&](const Point3m& p) {
-    const Eigen::Vector3d q(std::abs(p[0]) - 1, std::abs(p[1]) - 1,
-                            std::abs(p[2]) - half_thickness);
-    const double outside = q.cwiseMax(0.0).norm();
-    return outside > 0 ? outside : -q.maxCoeff();
-  };
   HoleFillParams p = SmallImages();
   p.symmetry.enabled = false;
   const auto result = FillHoles(m, p);
@@ -515,7 +515,8 @@ TEST(Creases, AHoleThatTakesAPlatesWholeCornerEdgeBringsItBack) {
       r.validation_note);
   double worst = 0;
   for (size_t v = scan_vertices; v < m.vert.size(); ++v)
-    worst = std::max(worst, std::abs(plate_distance(m.vert[v].cP())));
+    worst = std::max(worst,
+                     std::abs(BoxDistance(m.vert[v].cP(), Eigen::Vector3d(1, 1, half_thickness))));
   EXPECT_LT(worst, 0.02) << "a side face runs on through the other";
   // The edge between the side faces is as sharp as the plate's (the faces nearest two points
   // a third of the grid's spacing off it read 90 degrees; a chamfer reads about 45).

@@ -304,10 +304,11 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
         n.row(0) = fields[a].n.transpose(), n.row(1) = fields[b].n.transpose(),
         n.row(2) = fields[c].n.transpose();
         if (std::abs(n.determinant()) < 0.1) continue; // no single point
+        const Eigen::Matrix3d inverse = n.inverse();
         Eigen::Vector3d p = centre;
         for (int it = 0; it < 8; ++it) {
           const Eigen::Vector3d r(fields[a].Offset(p), fields[b].Offset(p), fields[c].Offset(p));
-          p -= n.inverse() * r;
+          p -= inverse * r;
           if (r.norm() < eps) break;
         }
         // The point is the hole's where a fill vertex is nearer to it than the hole's border.
@@ -365,10 +366,8 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
   for (size_t t = 0; t < nt; ++t) {
     if (!is_fill[t]) continue;
     const auto& f = triangles[t];
-    auto facing = [&](const std::array<Eigen::Vector3d, 3>& p) {
-      return (p[1] - p[0]).cross(p[2] - p[0]).dot(normal[t]);
-    };
-    if (facing({out.points[size_t(f[0])], out.points[size_t(f[1])], out.points[size_t(f[2])]}) > 0)
+    const Eigen::Vector3d& p0 = out.points[size_t(f[0])];
+    if ((out.points[size_t(f[1])] - p0).cross(out.points[size_t(f[2])] - p0).dot(normal[t]) > 0)
       continue;
     for (int k = 0; k < 3; ++k) {
       const size_t v = size_t(f[size_t(k)]);
@@ -380,12 +379,10 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
       const Eigen::Vector3d foot = a + (out.points[v] - a).dot(e) * e;
       const Eigen::Vector3d across = fields[face_of[v]].n.cross(e).normalized();
       const double off = std::max((out.points[v] - foot).norm(), 0.05 * (b - a).norm());
+      // The check covers t itself, one of the triangles around v.
       for (double side : {1.0, -1.0}) {
         const Eigen::Vector3d q = foot + side * off * across;
-        std::array<Eigen::Vector3d, 3> p{out.points[size_t(f[0])], out.points[size_t(f[1])],
-                                         out.points[size_t(f[2])]};
-        p[size_t(k)] = q;
-        if (facing(p) > 0 && keeps_triangles_facing(v, q)) {
+        if (keeps_triangles_facing(v, q)) {
           out.points[v] = q;
           break;
         }
