@@ -243,9 +243,9 @@ double FillSpacingPixels(const HoleImage& hi) {
 /// What the validation reads of the mesh being filled (never written while holes run).
 struct ValidationContext {
   const CMeshO* mesh = nullptr;
-  const vcg_ext::CoarseFillResult* coarse = nullptr;
-  const vcg_ext::VertexFaces* vf = nullptr; ///< null where no hole is validated
-  const SymmetryPrior* symmetry = nullptr;  ///< null where the prior is off
+  const vcg_ext::CoarseFillResult* coarse = nullptr; ///< the holes' coarse fills (always given)
+  const vcg_ext::VertexFaces* vf = nullptr;          ///< null where no hole is validated
+  const SymmetryPrior* symmetry = nullptr;           ///< null where the prior is off
 };
 
 /// Whether FillHoles and InpaintHoles look for the object's symmetry with these parameters.
@@ -516,6 +516,16 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& 
   hv.images_s = hi.seconds;
   if (!hi.problem.empty()) {
     hv.problem = hi.problem;
+    return hv;
+  }
+  // A hole in a plane (its loop planar, the faces around it in that plane or leaving it at a
+  // crease) is filled exactly by the coarse fill's flat cap; curvature painted from farther
+  // context (a crease or a curved face nearby) and fake holes cut there could only bend it.
+  // Asked for by kind or number, a variation is still made.
+  const bool automatic = params.pick == 0 && params.pick_kind.empty() && !params.oracle &&
+                         params.inpainted_dir.empty();
+  if (automatic && ctx.coarse->holes[size_t(hi.hole)].planar_cap) {
+    hv.problem = "a flat cap in its plane; it keeps its coarse fill";
     return hv;
   }
   const auto t = Clock::now();
@@ -922,6 +932,7 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
     // the vertex-face adjacency and the symmetry planes are found once, by the first hole that
     // needs them (every coarse fill is in place by then).
     ValidationContext ctx;
+    ctx.coarse = &coarse;
     if (validates || symmetric) {
       std::call_once(context_once, [&] {
         if (validates) vf = std::make_unique<vcg_ext::VertexFaces>(m);

@@ -527,6 +527,25 @@ TEST(Creases, AHoleThatTakesAPlatesWholeCornerEdgeBringsItBack) {
         << "at z = " << z;
 }
 
+// A hole in one of a cube's faces, two grid cells from its edge: the coarse fill's flat cap is
+// the face itself; the continuation and the tri-Laplacian read the curvature of the edge
+// nearby and bent it off the face.
+TEST(FlatCaps, AHoleInAFaceBesideAnEdgeStaysInTheFace) {
+  CMeshO m;
+  MakeCube(m, 24);
+  vcg_ext::PunchHole(m, Point3m(0.55f, 0, 1), Scalarm(0.3));
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+  const size_t scan_vertices = m.vert.size();
+  HoleFillParams p = SmallImages();
+  p.symmetry.enabled = false;
+  const auto result = FillHoles(m, p);
+  ASSERT_EQ(result.holes.size(), 1u);
+  EXPECT_NE(result.holes[0].problem.find("flat cap"), std::string::npos) << result.holes[0].problem;
+  ASSERT_GT(m.vert.size(), scan_vertices);
+  for (size_t v = scan_vertices; v < m.vert.size(); ++v)
+    EXPECT_NEAR(m.vert[v].cP()[2], 1, 1e-6) << v;
+}
+
 /// An ellipsoid (semi-axes 1, 0.7, 0.5) and a point's distance to it (first order).
 void MakeEllipsoid(CMeshO& m) {
   vcg::tri::Sphere(m, 5);
