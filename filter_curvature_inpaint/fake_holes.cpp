@@ -2,6 +2,8 @@
 
 #include "pipeline.h"
 
+#include <vcg_ext/edge_census.h>
+#include <vcg_ext/hole_loops.h>
 #include <vcg_ext/punch_hole.h>
 #include <vcg_ext/unit_box.h>
 
@@ -113,6 +115,27 @@ double RmsDistance(const Triangles& from, const Triangles& to, size_t samples = 
 
 Eigen::Vector3d ToEigen(const Point3m& p) {
   return {p[0], p[1], p[2]};
+}
+
+/// Whether, of a holed piece's two loops, the longer is the piece's border (farther from the
+/// fake hole's centre on average): the validation's coarse fill leaves the longest loop open.
+/// Where a piece wraps a thin part (an ear, a leg), the hole's loop can be the longer one; its
+/// coarse fill would then cap the piece's border and leave the hole open, and every candidate
+/// would be scored on that cap, two hole radii away from the surface cut out.
+bool HoleIsShorterThanBorder(const CMeshO& holed, const Eigen::Vector3d& centre) {
+  const vcg_ext::HoleLoops loops = vcg_ext::FindHoleLoops(holed, vcg_ext::CensusEdges(holed));
+  if (loops.holes.size() != 2) return false;
+  double length[2] = {0, 0}, distance[2] = {0, 0};
+  for (int l = 0; l < 2; ++l) {
+    const std::vector<int>& v = loops.holes[size_t(l)].vertices;
+    for (size_t i = 0; i < v.size(); ++i) {
+      const Eigen::Vector3d p = ToEigen(holed.vert[size_t(v[i])].cP());
+      length[l] += (ToEigen(holed.vert[size_t(v[(i + 1) % v.size()])].cP()) - p).norm();
+      distance[l] += (p - centre).norm() / double(v.size());
+    }
+  }
+  const int longer = length[1] > length[0] ? 1 : 0;
+  return distance[longer] > distance[1 - longer];
 }
 
 } // namespace
@@ -239,6 +262,7 @@ std::vector<std::unique_ptr<FakeHole>> CutFakeHoles(const CMeshO& m, const vcg_e
     vcg::tri::UpdateBounding<CMeshO>::Box(fake.holed);
     const HoleCensus holed_census = CountHoles(fake.holed);
     if (holed_census.loop_edges.size() != 2 || holed_census.non_manifold_edges > 0) continue;
+    if (!HoleIsShorterThanBorder(fake.holed, ToEigen(centre))) continue;
     const vcg_ext::UnitBox box = vcg_ext::ComputeUnitBox(fake.holed);
     for (const auto& f : fake.truth.face) {
       bool inside = false;

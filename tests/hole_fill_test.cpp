@@ -247,6 +247,74 @@ TEST(FakeHoles, NeverOverlapARealHoleEachOtherOrTheBorder) {
   }
 }
 
+/// A closed surface of revolution about the z axis, radius `profile(z)` for z in [0, length]
+/// (poles at both ends), `rings` rings of `around` vertices, faces facing out.
+template <class Profile>
+void MakeRevolved(CMeshO& m, double length, int rings, int around, Profile profile) {
+  vcg::tri::Allocator<CMeshO>::AddVertices(m, size_t(rings * around + 2));
+  for (int k = 0; k < rings; ++k)
+    for (int j = 0; j < around; ++j) {
+      const double z = length * (k + 1) / (rings + 1), a = 2 * M_PI * j / around;
+      m.vert[size_t(k * around + j)].P() =
+          Point3m(Scalarm(profile(z) * std::cos(a)), Scalarm(profile(z) * std::sin(a)), Scalarm(z));
+    }
+  const size_t bottom = size_t(rings * around), top = bottom + 1;
+  m.vert[bottom].P() = Point3m(0, 0, 0);
+  m.vert[top].P() = Point3m(0, 0, Scalarm(length));
+  auto at = [&](int k, int j) { return &m.vert[size_t(k * around + (j % around))]; };
+  auto add = [&](CVertexO* a, CVertexO* b, CVertexO* c) {
+    auto f = vcg::tri::Allocator<CMeshO>::AddFaces(m, 1);
+    f->V(0) = a, f->V(1) = b, f->V(2) = c;
+  };
+  for (int j = 0; j < around; ++j) {
+    add(&m.vert[bottom], at(0, j + 1), at(0, j));
+    add(&m.vert[top], at(rings - 1, j), at(rings - 1, j + 1));
+    for (int k = 0; k + 1 < rings; ++k) {
+      add(at(k, j), at(k, j + 1), at(k + 1, j + 1));
+      add(at(k, j), at(k + 1, j + 1), at(k + 1, j));
+    }
+  }
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+}
+
+// A ball (radius 1) with a stick (radius 0.15) ending in a knob (radius 0.5), a hole of radius
+// 0.5 in the ball. The only places for fake holes of its size are on the stick, where one cuts
+// it in two, and on the knob, whose piece (three hole radii around it) wraps the whole knob and
+// ends in a ring around the stick: that ring is shorter than the hole's own loop, and the
+// validation's coarse fill, which leaves the longest loop open as the piece's border, would
+// cap the ring and leave the hole open. No fake hole is cut there.
+TEST(FakeHoles, NoneIsCutWhereThePiecesBorderIsShorterThanTheHole) {
+  CMeshO m;
+  MakeRevolved(m, 6.0, 239, 48, [](double z) {
+    const double ball = std::sqrt(std::max(0.0, 1 - (z - 1) * (z - 1)));
+    const double knob = std::sqrt(std::max(0.0, 0.25 - (z - 5.5) * (z - 5.5)));
+    return std::max({ball, knob, z > 1 && z < 5.5 ? 0.15 : 0.0});
+  });
+  ASSERT_TRUE(curvature_inpaint::CountHoles(m).loop_edges.empty());
+  vcg_ext::PunchHole(m, Point3m(0.8f, 0, 1.6f), Scalarm(0.55));
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+  const auto coarse = curvature_inpaint::CoarseFill(m, vcg_ext::CoarseFillParams());
+  ASSERT_EQ(coarse.FilledCount(), 1);
+  const vcg_ext::VertexFaces vf(m);
+  curvature_inpaint::FakeHoleParams fp;
+  std::string why;
+  const auto fakes = curvature_inpaint::CutFakeHoles(m, vf, coarse, 0, fp, &why);
+  for (const auto& f : fakes) {
+    // The loop a piece's coarse fill closes is the fake hole's, around its centre.
+    CMeshO local;
+    curvature_inpaint::CopyMesh(f->holed, local);
+    vcg_ext::CoarseFillParams cp;
+    cp.keep_longest_open = true;
+    const auto filled = curvature_inpaint::CoarseFill(local, cp);
+    for (const auto& h : filled.holes)
+      if (h.filled)
+        EXPECT_LT((LoopBall(local, h.loop).first - f->centre).norm(), 0.5) << f->centre.transpose();
+  }
+  EXPECT_TRUE(fakes.empty()) << fakes.size() << " cut, the first at "
+                             << fakes[0]->centre.transpose();
+  EXPECT_NE(why.find("no room"), std::string::npos) << why;
+}
+
 TEST(FakeHoles, OneIsCutAtTheMirrorPlaceWhereItIsKnownSurface) {
   CMeshO m;
   const auto coarse = WavySheetWithHoles(m, {Point3m(-0.5f, -0.8f, 0)});
