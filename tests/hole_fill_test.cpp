@@ -595,6 +595,28 @@ TEST(Creases, AHoleThatTakesAPlatesWholeCornerEdgeBringsItBack) {
         << "at z = " << z;
 }
 
+// A hole in a cylinder's side a ring below the edge where the flat end meets it: one face all
+// around the hole, a crease beyond it. The crease prior offers that face extended across the
+// hole (before, it offered nothing: "fewer than two smooth faces meet at it").
+TEST(Creases, AHoleInOneFaceBesideAnEdgeGetsTheFaceExtended) {
+  CMeshO m;
+  MakeRevolved(m, 2.0, 40, 64, [](double) { return 1.0; });
+  vcg_ext::PunchHole(m, Point3m(1, 0, 1.65f), Scalarm(0.25));
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+  const size_t scan_vertices = m.vert.size();
+  HoleFillParams p = SmallImages();
+  p.symmetry.enabled = false;
+  p.pick_kind = "creases";
+  const auto result = FillHoles(m, p);
+  ASSERT_EQ(result.holes.size(), 1u);
+  const auto& r = result.holes[0];
+  ASSERT_TRUE(r.problem.empty()) << r.problem;
+  EXPECT_EQ(r.kind, "creases") << r.crease_note;
+  ASSERT_GT(m.vert.size(), scan_vertices);
+  for (size_t v = scan_vertices; v < m.vert.size(); ++v)
+    EXPECT_NEAR(std::hypot(m.vert[v].cP()[0], m.vert[v].cP()[1]), 1, 0.005) << v;
+}
+
 // A hole in one of a cube's faces, two grid cells from its edge: the coarse fill's flat cap is
 // the face itself; the continuation and the tri-Laplacian read the curvature of the edge
 // nearby and bent it off the face.

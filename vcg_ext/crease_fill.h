@@ -193,6 +193,20 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
     region_vertices.push_back(std::move(verts));
   }
   out.regions = int(fields.size());
+  // One face all around the hole and a crease beyond it (a hole in a machined part's face,
+  // near its edge): the missing surface is that face, extended. A smooth fill reads the
+  // crease's curvature in the rings around the hole and bends towards it.
+  bool one_face_around = fields.size() == 1;
+  for (size_t t = 0; t < nt && one_face_around; ++t)
+    if (!is_fill[t])
+      for (int v : triangles[t])
+        one_face_around = one_face_around && (!on_border[size_t(v)] || region[t] == 0);
+  if (one_face_around) {
+    out.points = points;
+    for (size_t i = 0; i < points.size(); ++i)
+      if (free[i]) out.points[i] -= fields[0].Offset(points[i]) * fields[0].n;
+    return out;
+  }
   if (fields.size() < 2) {
     out.problem = "fewer than two smooth faces meet at it";
     return out;
