@@ -6,7 +6,8 @@
 // them meet onto it, and the fill vertices nearest a crease onto its line, so that fill edges
 // run along it. Where two regions' surfaces meet, the crease comes back straight and sharp as
 // the extension of both, even where the hole took all of it (a plate's corner edge); where
-// three meet, a corner. A smooth cap (Liepa, CGAL, MeshLab) rounds them away.
+// three meet, a corner. Where one face surrounds the hole and a crease passes beside it, the
+// fill is that face extended. A smooth cap (Liepa, CGAL, MeshLab) rounds them away.
 #pragma once
 
 #include "fill_extent.h"
@@ -64,10 +65,11 @@ struct HeightField {
 } // namespace detail
 
 /// The crease-carrying fill of a hole's patch (`points`, `triangles`, `is_fill` per triangle,
-/// `free` per vertex: the fill's vertices), oriented consistently. A `problem` where the context
-/// has no crease, fewer than two smooth regions meet at the hole, a region is not smooth enough
-/// to extend, or no two of them meet at a crease (one beside the hole, or one inside it that
-/// shows in how the two faces lie).
+/// `free` per vertex: the fill's vertices), oriented consistently; where one smooth region
+/// surrounds the hole, that region extended. A `problem` where the context has no crease, no
+/// smooth region or only part of the hole's border in one, a region is not smooth enough to
+/// extend, or no two of them meet at a crease (one beside the hole, or one inside it that shows
+/// in how the two faces lie).
 inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
                                     const std::vector<std::array<int, 3>>& triangles,
                                     const std::vector<char>& is_fill, const std::vector<char>& free,
