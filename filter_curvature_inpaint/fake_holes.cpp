@@ -117,14 +117,13 @@ Eigen::Vector3d ToEigen(const Point3m& p) {
   return {p[0], p[1], p[2]};
 }
 
-/// Whether, of a holed piece's two loops, the longer is the piece's border (farther from the
+/// Whether, of a holed piece's two `loops`, the longer is the piece's border (farther from the
 /// fake hole's centre on average): the validation's coarse fill leaves the longest loop open.
 /// Where a piece wraps a thin part (an ear, a leg), the hole's loop can be the longer one; its
 /// coarse fill would then cap the piece's border and leave the hole open, and every candidate
 /// would be scored on that cap, two hole radii away from the surface cut out.
-bool HoleIsShorterThanBorder(const CMeshO& holed, const Eigen::Vector3d& centre) {
-  const vcg_ext::HoleLoops loops = vcg_ext::FindHoleLoops(holed, vcg_ext::CensusEdges(holed));
-  if (loops.holes.size() != 2) return false;
+bool HoleIsShorterThanBorder(const CMeshO& holed, const vcg_ext::HoleLoops& loops,
+                             const Eigen::Vector3d& centre) {
   double length[2] = {0, 0}, distance[2] = {0, 0};
   for (int l = 0; l < 2; ++l) {
     const std::vector<int>& v = loops.holes[size_t(l)].vertices;
@@ -260,9 +259,12 @@ std::vector<std::unique_ptr<FakeHole>> CutFakeHoles(const CMeshO& m, const vcg_e
     const Point3m centre = m.vert[v].cP();
     vcg_ext::PunchHole(fake.holed, centre, Scalarm(r));
     vcg::tri::UpdateBounding<CMeshO>::Box(fake.holed);
-    const HoleCensus holed_census = CountHoles(fake.holed);
-    if (holed_census.loop_edges.size() != 2 || holed_census.non_manifold_edges > 0) continue;
-    if (!HoleIsShorterThanBorder(fake.holed, ToEigen(centre))) continue;
+    const vcg_ext::EdgeCensus holed_edges = vcg_ext::CensusEdges(fake.holed);
+    if (holed_edges.non_manifold_edges > 0) continue;
+    const vcg_ext::HoleLoops holed_loops = vcg_ext::FindHoleLoops(fake.holed, holed_edges);
+    if (holed_loops.holes.size() != 2 ||
+        !HoleIsShorterThanBorder(fake.holed, holed_loops, ToEigen(centre)))
+      continue;
     const vcg_ext::UnitBox box = vcg_ext::ComputeUnitBox(fake.holed);
     for (const auto& f : fake.truth.face) {
       bool inside = false;

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <string>
 
 namespace {
 
@@ -499,6 +500,18 @@ double CubeDistance(const Point3m& p) {
   return BoxDistance(p, Eigen::Vector3d::Ones());
 }
 
+/// Fills the holes punched in `m` with the small images and without the mirror prior (the
+/// boxes and the cylinder below are symmetric: their mirror image would restore what the prior
+/// under test should), taking the variation of `pick_kind` where one is given.
+curvature_inpaint::HoleFillResult FillWithoutSymmetry(CMeshO& m,
+                                                      const std::string& pick_kind = "") {
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+  HoleFillParams p = SmallImages();
+  p.symmetry.enabled = false;
+  p.pick_kind = pick_kind;
+  return FillHoles(m, p);
+}
+
 TEST(Creases, AHoleOnACubesEdgeAndOneOnItsCornerComeBackSharp) {
   CMeshO m;
   MakeCube(m, 24);
@@ -570,11 +583,8 @@ TEST(Creases, AHoleThatTakesAPlatesWholeCornerEdgeBringsItBack) {
   const Scalarm half_thickness = Scalarm(0.25);
   for (auto& v : m.vert) v.P()[2] *= half_thickness;
   vcg_ext::PunchHole(m, Point3m(1, 1, 0), Scalarm(0.4));
-  vcg::tri::UpdateBounding<CMeshO>::Box(m);
   const size_t scan_vertices = m.vert.size();
-  HoleFillParams p = SmallImages();
-  p.symmetry.enabled = false;
-  const auto result = FillHoles(m, p);
+  const auto result = FillWithoutSymmetry(m);
   ASSERT_EQ(result.holes.size(), 1u);
   const auto& r = result.holes[0];
   ASSERT_TRUE(r.problem.empty()) << r.problem;
@@ -602,12 +612,8 @@ TEST(Creases, AHoleInOneFaceBesideAnEdgeGetsTheFaceExtended) {
   CMeshO m;
   MakeRevolved(m, 2.0, 40, 64, [](double) { return 1.0; });
   vcg_ext::PunchHole(m, Point3m(1, 0, 1.65f), Scalarm(0.25));
-  vcg::tri::UpdateBounding<CMeshO>::Box(m);
   const size_t scan_vertices = m.vert.size();
-  HoleFillParams p = SmallImages();
-  p.symmetry.enabled = false;
-  p.pick_kind = "creases";
-  const auto result = FillHoles(m, p);
+  const auto result = FillWithoutSymmetry(m, "creases");
   ASSERT_EQ(result.holes.size(), 1u);
   const auto& r = result.holes[0];
   ASSERT_TRUE(r.problem.empty()) << r.problem;
@@ -624,11 +630,8 @@ TEST(FlatCaps, AHoleInAFaceBesideAnEdgeStaysInTheFace) {
   CMeshO m;
   MakeCube(m, 24);
   vcg_ext::PunchHole(m, Point3m(0.55f, 0, 1), Scalarm(0.3));
-  vcg::tri::UpdateBounding<CMeshO>::Box(m);
   const size_t scan_vertices = m.vert.size();
-  HoleFillParams p = SmallImages();
-  p.symmetry.enabled = false;
-  const auto result = FillHoles(m, p);
+  const auto result = FillWithoutSymmetry(m);
   ASSERT_EQ(result.holes.size(), 1u);
   EXPECT_NE(result.holes[0].problem.find("flat cap"), std::string::npos) << result.holes[0].problem;
   ASSERT_GT(m.vert.size(), scan_vertices);
