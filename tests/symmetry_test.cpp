@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <map>
 #include <random>
 
 namespace {
@@ -105,3 +107,74 @@ TEST(ReflectiveSymmetry, FindsNoneOnTheBunny) {
 }
 
 } // namespace
+
+namespace {
+
+/// The wavy sheet x = Sheet(y, z): features everywhere, so a ring on it pins its place.
+double Sheet(double y, double z) {
+  return 1 + 0.08 * std::sin(6 * y) * std::cos(5 * z);
+}
+
+} // namespace
+
+TEST(MirroredFill, RegistersTheMirrorImageOntoATwinOffItsMirrorPlace) {
+  // The object's other half (x < 0) is the sheet's mirror image moved by `shift` along y, as
+  // a posed limb's twin lies beside the mirror place of the limb. The hole is the disc of
+  // radius 0.3 around (Sheet(0, 0), 0, 0); its fill starts flat at x = 1.
+  const double shift = 0.1, radius = 0.3, step = 0.02;
+  std::vector<Eigen::Vector3d> known, normals;
+  for (double y = -1.2; y <= 1.2; y += step)
+    for (double z = -1.2; z <= 1.2; z += step) {
+      const double yy = y - shift;
+      known.emplace_back(-Sheet(yy, z), y, z);
+      // Outwards (towards -x): minus the gradient of x + Sheet(y - shift, z).
+      normals.push_back(-Eigen::Vector3d(1, 0.48 * std::cos(6 * yy) * std::cos(5 * z),
+                                         -0.4 * std::sin(6 * yy) * std::sin(5 * z))
+                             .normalized());
+    }
+  // The patch: a grid of the sheet within 2 radii, the disc's vertices free and flat.
+  std::vector<Eigen::Vector3d> points;
+  std::vector<char> free;
+  std::map<std::pair<int, int>, int> index;
+  const int cells = int(std::lround(2 * radius / step));
+  for (int i = -cells; i <= cells; ++i)
+    for (int j = -cells; j <= cells; ++j) {
+      const double y = i * step, z = j * step;
+      if (std::hypot(y, z) > 2 * radius) continue;
+      index[{i, j}] = int(points.size());
+      const bool in_hole = std::hypot(y, z) < radius;
+      points.emplace_back(in_hole ? 1.0 : Sheet(y, z), y, z);
+      free.push_back(in_hole);
+    }
+  std::vector<std::array<int, 3>> triangles;
+  for (const auto& e : index) {
+    const int i = e.first.first, j = e.first.second;
+    const auto b = index.find({i + 1, j}), c = index.find({i, j + 1}),
+               d = index.find({i + 1, j + 1});
+    if (b == index.end() || c == index.end() || d == index.end()) continue;
+    triangles.push_back({{e.second, b->second, d->second}});
+    triangles.push_back({{e.second, d->second, c->second}});
+  }
+  const vcg_ext::PointIndex points_index(known);
+  vcg_ext::KnownSurface surface;
+  surface.index = &points_index;
+  surface.normals = &normals;
+  vcg_ext::SymmetryPlane plane; // x = 0
+  auto worst_error = [&](const vcg_ext::MirroredFillParams& params) {
+    const vcg_ext::MirroredFill fill =
+        vcg_ext::MirrorFill(points, triangles, free, plane, surface, radius, params);
+    EXPECT_TRUE(fill.problem.empty()) << fill.problem;
+    double worst = 0;
+    for (size_t i = 0; i < points.size(); ++i)
+      if (free[i])
+        worst = std::max(
+            worst, std::abs(fill.points[i].x() - Sheet(fill.points[i].y(), fill.points[i].z())));
+    return worst;
+  };
+  vcg_ext::MirroredFillParams reflected;
+  reflected.registration_rounds = 0;
+  const double without = worst_error(reflected);
+  const double with = worst_error(vcg_ext::MirroredFillParams());
+  EXPECT_GT(without, 0.04) << "the reflection alone reads the twin shifted";
+  EXPECT_LT(with, 0.6 * without) << "registered, it reads the twin nearer its place";
+}
