@@ -106,16 +106,10 @@ TEST(ReflectiveSymmetry, FindsNoneOnTheBunny) {
       << "coverage " << best.coverage;
 }
 
-} // namespace
-
-namespace {
-
 /// The wavy sheet x = Sheet(y, z): features everywhere, so a ring on it pins its place.
 double Sheet(double y, double z) {
   return 1 + 0.08 * std::sin(6 * y) * std::cos(5 * z);
 }
-
-} // namespace
 
 TEST(MirroredFill, RegistersTheMirrorImageOntoATwinOffItsMirrorPlace) {
   // The object's other half (x < 0) is the sheet's mirror image moved by `shift` along y, as
@@ -178,3 +172,5 @@ TEST(MirroredFill, RegistersTheMirrorImageOntoATwinOffItsMirrorPlace) {
   EXPECT_GT(without, 0.04) << "the reflection alone reads the twin shifted";
   EXPECT_LT(with, 0.6 * without) << "registered, it reads the twin nearer its place";
 }
+
+} // namespace

@@ -171,11 +171,11 @@ inline MirroredFill MirrorFill(const std::vector<Eigen::Vector3d>& points,
   // The feet lie along the normals, so each round slides only part of the way along the
   // surface: the rounds are few enough to stop short of a full registration, which on the
   // benchmark's tuning half slid onto neighbouring features more often than it helped.
+  std::vector<Eigen::Vector3d> reflected(n);
+  for (size_t i = 0; i < n; ++i) reflected[i] = plane.Reflect(points[i]);
   Eigen::Matrix3d motion = Eigen::Matrix3d::Identity();
   Eigen::Vector3d shift = Eigen::Vector3d::Zero();
-  auto mirrored = [&](size_t i) {
-    return Eigen::Vector3d(motion * plane.Reflect(points[i]) + shift);
-  };
+  auto mirrored = [&](size_t i) { return Eigen::Vector3d(motion * reflected[i] + shift); };
   for (int round = 0; round < params.registration_rounds; ++round) {
     std::vector<Eigen::Vector3d> from, to;
     for (size_t i = 0; i < n; ++i) {
@@ -192,10 +192,9 @@ inline MirroredFill MirrorFill(const std::vector<Eigen::Vector3d>& points,
     // slid onto another part.
     double farthest = 0;
     for (size_t i = 0; i < n; ++i)
-      if (!free[i]) {
-        const Eigen::Vector3d y = plane.Reflect(points[i]);
-        farthest = std::max(farthest, (next_motion * y + next_shift - y).norm());
-      }
+      if (!free[i])
+        farthest =
+            std::max(farthest, (next_motion * reflected[i] + next_shift - reflected[i]).norm());
     if (farthest > params.max_registration * radius) break;
     motion = next_motion, shift = next_shift;
     if (step.translation.norm() < 1e-4 * radius) break;
