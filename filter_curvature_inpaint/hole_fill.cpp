@@ -985,6 +985,7 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
     if (symmetry) {
       result.symmetry_detected = true;
       result.symmetry = symmetry->planes;
+      result.symmetry_partial = symmetry->partial;
       result.symmetry_best = symmetry->best;
       result.symmetry_s = symmetry->seconds;
     }
@@ -1048,7 +1049,8 @@ std::string DescribeValidation(const std::vector<std::string>& candidates,
 std::vector<std::string> DescribeHoleFill(const HoleFillResult& result) {
   std::vector<std::string> lines = DescribeCoarseFill(result.coarse);
   if (result.symmetry_detected)
-    lines.push_back(DescribeSymmetry(result.symmetry, result.symmetry_best));
+    lines.push_back(
+        DescribeSymmetry(result.symmetry, result.symmetry_best, result.symmetry_partial));
   char buf[512];
   for (size_t k = 0; k < result.holes.size(); ++k) {
     const auto& r = result.holes[k];
@@ -1081,14 +1083,21 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
   o << "{\n  \"backend\": \"" << params.inpaint.backend << "\",\n  \"mode\": \"" << params.mode
     << "\",\n";
   if (result.symmetry_detected) {
-    o << "  \"symmetry\": {\"seconds\": " << result.symmetry_s << ", \"planes\": [";
-    for (size_t k = 0; k < result.symmetry.size(); ++k) {
-      const auto& p = result.symmetry[k];
-      o << (k ? ", " : "") << "{\"normal\": [" << p.normal.x() << ", " << p.normal.y() << ", "
-        << p.normal.z() << "], \"offset\": " << p.offset << ", \"coverage\": " << p.coverage
-        << ", \"residual\": " << p.residual << "}";
-    }
-    o << "], \"best_coverage\": " << result.symmetry_best.coverage << "},\n";
+    auto planes = [&o](const std::vector<vcg_ext::SymmetryPlane>& list) {
+      o << "[";
+      for (size_t k = 0; k < list.size(); ++k) {
+        const auto& p = list[k];
+        o << (k ? ", " : "") << "{\"normal\": [" << p.normal.x() << ", " << p.normal.y() << ", "
+          << p.normal.z() << "], \"offset\": " << p.offset << ", \"coverage\": " << p.coverage
+          << ", \"residual\": " << p.residual << "}";
+      }
+      o << "]";
+    };
+    o << "  \"symmetry\": {\"seconds\": " << result.symmetry_s << ", \"planes\": ";
+    planes(result.symmetry);
+    o << ", \"partial_planes\": ";
+    planes(result.symmetry_partial);
+    o << ", \"best_coverage\": " << result.symmetry_best.coverage << "},\n";
   }
   o << "  \"holes\": [";
   for (size_t k = 0; k < result.holes.size(); ++k) {

@@ -131,9 +131,10 @@ struct HoleVariations {
 struct HoleFillResult {
   vcg_ext::CoarseFillResult coarse;
   std::vector<HoleFillReport> holes;
-  bool symmetry_detected = false;               ///< the prior ran (some hole needed it)
-  std::vector<vcg_ext::SymmetryPlane> symmetry; ///< the planes it found
-  vcg_ext::SymmetryPlane symmetry_best;         ///< the best-covering plane, found or not
+  bool symmetry_detected = false;                       ///< the prior ran (some hole needed it)
+  std::vector<vcg_ext::SymmetryPlane> symmetry;         ///< the planes it found
+  std::vector<vcg_ext::SymmetryPlane> symmetry_partial; ///< the partial symmetries it found
+  vcg_ext::SymmetryPlane symmetry_best;                 ///< the best-covering plane, found or not
   double symmetry_s = 0;
 };
 

@@ -12,6 +12,17 @@
 
 namespace curvature_inpaint {
 
+namespace {
+
+/// The planes a hole may mirror across: the accepted ones, then the partial symmetries.
+std::vector<vcg_ext::SymmetryPlane> UsablePlanes(const SymmetryPrior& prior) {
+  std::vector<vcg_ext::SymmetryPlane> planes = prior.planes;
+  planes.insert(planes.end(), prior.partial.begin(), prior.partial.end());
+  return planes;
+}
+
+} // namespace
+
 std::unique_ptr<SymmetryPrior> DetectSymmetry(const CMeshO& m,
                                               const vcg_ext::CoarseFillResult& coarse,
                                               const vcg_ext::SymmetryParams& params) {
@@ -39,8 +50,8 @@ std::unique_ptr<SymmetryPrior> DetectSymmetry(const CMeshO& m,
   }
   if (!prior->points.empty()) {
     prior->index = std::make_unique<vcg_ext::PointIndex>(prior->points);
-    prior->planes =
-        vcg_ext::DetectReflectiveSymmetry(prior->points, prior->normals, params, &prior->best);
+    prior->planes = vcg_ext::DetectReflectiveSymmetry(prior->points, prior->normals, params,
+                                                      &prior->best, &prior->partial);
   }
   prior->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return prior;
@@ -48,13 +59,14 @@ std::unique_ptr<SymmetryPrior> DetectSymmetry(const CMeshO& m,
 
 std::vector<vcg_ext::SymmetryPlane> MirrorPlanesInMeshUnits(const SymmetryPrior& prior) {
   // n . u = d with u = (x - origin) scale is n . x = d / scale + n . origin.
-  std::vector<vcg_ext::SymmetryPlane> planes = prior.planes;
+  std::vector<vcg_ext::SymmetryPlane> planes = UsablePlanes(prior);
   for (auto& p : planes) p.offset = p.offset / prior.box.scale + p.normal.dot(prior.box.origin);
   return planes;
 }
 
 std::string DescribeSymmetry(const std::vector<vcg_ext::SymmetryPlane>& planes,
-                             const vcg_ext::SymmetryPlane& best) {
+                             const vcg_ext::SymmetryPlane& best,
+                             const std::vector<vcg_ext::SymmetryPlane>& partial) {
   auto plane = [](const vcg_ext::SymmetryPlane& p) {
     std::ostringstream o;
     o << "plane (" << QString::number(p.normal.x(), 'f', 3).toStdString() << ", "
@@ -67,8 +79,11 @@ std::string DescribeSymmetry(const std::vector<vcg_ext::SymmetryPlane>& planes,
   };
   std::ostringstream o;
   o << "symmetry: ";
-  if (planes.empty()) o << "none; the best " << plane(best);
+  if (planes.empty() && partial.empty()) o << "none; the best " << plane(best);
+  if (planes.empty() && !partial.empty()) o << "none of the whole object";
   for (size_t k = 0; k < planes.size(); ++k) o << (k ? "; " : "") << plane(planes[k]);
+  if (!partial.empty()) o << "; partial, for the holes whose surroundings it mirrors: ";
+  for (size_t k = 0; k < partial.size(); ++k) o << (k ? "; " : "") << plane(partial[k]);
   return o.str();
 }
 
@@ -78,7 +93,8 @@ vcg_ext::MirroredFill MirrorHole(const SymmetryPrior& prior, const vcg_ext::Patc
                                  const Eigen::Vector3d& excluded_centre, double excluded_radius) {
   vcg_ext::MirroredFill best;
   best.problem = "the object has no symmetry plane";
-  if (!prior.index || prior.planes.empty()) return best;
+  const std::vector<vcg_ext::SymmetryPlane> planes = UsablePlanes(prior);
+  if (!prior.index || planes.empty()) return best;
   // The patch in the prior's unit box (both boxes are similarities of the mesh's units).
   auto to_prior = [&](const Eigen::Vector3d& u) {
     return Eigen::Vector3d(((u / frame.scale + frame.origin) - prior.box.origin) * prior.box.scale);
@@ -99,11 +115,12 @@ vcg_ext::MirroredFill MirrorHole(const SymmetryPrior& prior, const vcg_ext::Patc
   known.normals = &prior.normals;
   known.excluded_centre = (excluded_centre - prior.box.origin) * prior.box.scale;
   known.excluded_radius = excluded_radius * prior.box.scale;
-  // The planes best covering the object first: a hole's ring alone (often plain surface that
-  // many planes map onto plain surface) cannot tell the object's symmetry from a chance one.
-  for (size_t k = 0; k < prior.planes.size(); ++k) {
+  // The planes best covering the object first, the partial symmetries after them: a hole's
+  // ring alone (often plain surface that many planes map onto plain surface) cannot tell the
+  // object's symmetry from a chance one.
+  for (size_t k = 0; k < planes.size(); ++k) {
     vcg_ext::MirroredFill f =
-        vcg_ext::MirrorFill(points, patch.triangles, free, prior.planes[k], known, radius, params);
+        vcg_ext::MirrorFill(points, patch.triangles, free, planes[k], known, radius, params);
     if (k == 0 || !f.problem.empty()) best.problem = f.problem;
     if (!f.problem.empty()) continue;
     for (auto& p : f.points) p = to_frame(p);

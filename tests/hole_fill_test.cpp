@@ -415,6 +415,35 @@ TEST(Symmetry, AHoleOverABumpComesBackLikeItsTwin) {
   EXPECT_NEAR(test::FillHeight(m, scan_vertices, bump), test::kEggBump, 0.1 * test::kEggBump);
 }
 
+TEST(Symmetry, APartialSymmetryServesAHoleWhoseSurroundingsItMirrors) {
+  CMeshO m;
+  test::MakeSymmetricEgg(m);
+  const Eigen::Vector3d bump = test::EggBumps()[0];
+  test::PunchBump(m, bump);
+  const size_t scan_vertices = m.vert.size();
+  HoleFillParams p = SmallImages();
+  // No plane can make the object symmetric: the egg's own is found as a partial symmetry.
+  p.symmetry.detection.min_coverage = 1;
+  p.symmetry.detection.min_partial_coverage = 0.5;
+  const auto result = FillHoles(m, p);
+  ASSERT_TRUE(result.symmetry_detected);
+  EXPECT_TRUE(result.symmetry.empty());
+  ASSERT_FALSE(result.symmetry_partial.empty());
+  EXPECT_GT(std::abs(result.symmetry_partial[0].normal.x()), std::cos(M_PI / 180));
+  std::string log;
+  for (const std::string& line : curvature_inpaint::DescribeHoleFill(result)) log += line + "\n";
+  EXPECT_NE(log.find("symmetry: none of the whole object; partial"), std::string::npos) << log;
+  ASSERT_EQ(result.holes.size(), 1u);
+  const auto& r = result.holes[0];
+  ASSERT_TRUE(r.problem.empty()) << r.problem;
+  EXPECT_EQ(r.kind.rfind("symmetry", 0), 0u)
+      << "chose " << r.kind << ": "
+      << curvature_inpaint::DescribeValidation(r.candidates, r.validation_errors, r.choice,
+                                               r.fake_holes, r.mirror_fake_holes,
+                                               r.validation_note);
+  EXPECT_NEAR(test::FillHeight(m, scan_vertices, bump), test::kEggBump, 0.1 * test::kEggBump);
+}
+
 TEST(Symmetry, AHoleWhoseTwinIsMissingTooKeepsTheContinuation) {
   CMeshO m;
   test::MakeSymmetricEgg(m);

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <string>
 
 namespace {
 
@@ -89,21 +90,41 @@ TEST(ReflectiveSymmetry, FindsNoneOnATwistedObject) {
       << "coverage " << best.coverage;
 }
 
-TEST(ReflectiveSymmetry, FindsNoneOnTheBunny) {
+/// The vertices of one of the meshes beside the project, in its unit box.
+void SampleSharedMesh(const std::string& name, std::vector<Eigen::Vector3d>& points,
+                      std::vector<Eigen::Vector3d>& normals) {
   test::Mesh m;
   int mask = 0;
-  ASSERT_EQ(
-      vcg::tri::io::ImporterPLY<test::Mesh>::Open(m, CI_SHARED_MESHES "/stanford_bunny.ply", mask),
-      0);
+  const std::string path = std::string(CI_SHARED_MESHES) + "/" + name;
+  ASSERT_EQ(vcg::tri::io::ImporterPLY<test::Mesh>::Open(m, path.c_str(), mask), 0);
   vcg::tri::UpdateBounding<test::Mesh>::Box(m);
   const double scale = 1.0 / m.bbox.Dim()[m.bbox.MaxDim()];
-  std::vector<Eigen::Vector3d> points, normals;
   const Eigen::Vector3d origin(m.bbox.min[0], m.bbox.min[1], m.bbox.min[2]);
   Sample(m, scale * Eigen::Matrix3d::Identity(), -scale * origin, points, normals);
+}
+
+TEST(ReflectiveSymmetry, FindsNoneOnTheBunny) {
+  std::vector<Eigen::Vector3d> points, normals;
+  SampleSharedMesh("stanford_bunny.ply", points, normals);
   vcg_ext::SymmetryPlane best;
   EXPECT_TRUE(
       vcg_ext::DetectReflectiveSymmetry(points, normals, vcg_ext::SymmetryParams(), &best).empty())
       << "coverage " << best.coverage;
+}
+
+TEST(ReflectiveSymmetry, FindsThePosedHorsesPlaneAsAPartialSymmetry) {
+  std::vector<Eigen::Vector3d> points, normals;
+  SampleSharedMesh("horse.ply", points, normals);
+  vcg_ext::SymmetryPlane best;
+  std::vector<vcg_ext::SymmetryPlane> partial;
+  EXPECT_TRUE(
+      vcg_ext::DetectReflectiveSymmetry(points, normals, vcg_ext::SymmetryParams(), &best, &partial)
+          .empty())
+      << "its legs and head are posed: coverage " << best.coverage;
+  ASSERT_FALSE(partial.empty());
+  // Its body's plane, across the x axis.
+  EXPECT_GT(std::abs(partial[0].normal.x()), std::cos(5 * M_PI / 180));
+  EXPECT_GE(partial[0].coverage, vcg_ext::SymmetryParams().min_partial_coverage);
 }
 
 /// The wavy sheet x = Sheet(y, z): features everywhere, so a ring on it pins its place.

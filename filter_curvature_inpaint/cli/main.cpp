@@ -449,7 +449,9 @@ int Info(Args& args) {
     vcg_ext::CoarseFillResult scan; // nothing filled: every vertex is the scan's
     scan.box = vcg_ext::ComputeUnitBox(m);
     const auto prior = curvature_inpaint::DetectSymmetry(m, scan, vcg_ext::SymmetryParams());
-    std::printf("%s\n", curvature_inpaint::DescribeSymmetry(prior->planes, prior->best).c_str());
+    std::printf(
+        "%s\n",
+        curvature_inpaint::DescribeSymmetry(prior->planes, prior->best, prior->partial).c_str());
   }
   return 0;
 }
