@@ -386,6 +386,23 @@ TEST(FakeHoles, TheValidatedChoiceIsTheSameForAnyThreadCount) {
   for (size_t i = 0; i < results[0].size(); ++i) ASSERT_EQ(results[0][i], results[1][i]) << i;
 }
 
+/// The egg's one hole (over `bump`, `m` filled into `result`) took a symmetry candidate, and
+/// the fill is as high as its twin.
+void ExpectTheBumpBackFromItsTwin(const curvature_inpaint::HoleFillResult& result, const CMeshO& m,
+                                  size_t scan_vertices, const Eigen::Vector3d& bump) {
+  ASSERT_EQ(result.holes.size(), 1u);
+  const auto& r = result.holes[0];
+  ASSERT_TRUE(r.problem.empty()) << r.problem;
+  ASSERT_FALSE(r.candidates.empty()) << r.validation_note;
+  EXPECT_EQ(r.kind.rfind("symmetry", 0), 0u)
+      << "chose " << r.kind << ": "
+      << curvature_inpaint::DescribeValidation(r.candidates, r.validation_errors, r.choice,
+                                               r.fake_holes, r.mirror_fake_holes,
+                                               r.validation_note);
+  // The twin's height is the bump's: the mirror image brings it back.
+  EXPECT_NEAR(test::FillHeight(m, scan_vertices, bump), test::kEggBump, 0.1 * test::kEggBump);
+}
+
 TEST(Symmetry, AHoleOverABumpComesBackLikeItsTwin) {
   CMeshO m;
   test::MakeSymmetricEgg(m);
@@ -402,17 +419,7 @@ TEST(Symmetry, AHoleOverABumpComesBackLikeItsTwin) {
   ASSERT_TRUE(result.symmetry_detected);
   ASSERT_FALSE(result.symmetry.empty());
   EXPECT_GT(std::abs(result.symmetry[0].normal.x()), std::cos(M_PI / 180));
-  ASSERT_EQ(result.holes.size(), 1u);
-  const auto& r = result.holes[0];
-  ASSERT_TRUE(r.problem.empty()) << r.problem;
-  ASSERT_FALSE(r.candidates.empty()) << r.validation_note;
-  EXPECT_EQ(r.kind.rfind("symmetry", 0), 0u)
-      << "chose " << r.kind << ": "
-      << curvature_inpaint::DescribeValidation(r.candidates, r.validation_errors, r.choice,
-                                               r.fake_holes, r.mirror_fake_holes,
-                                               r.validation_note);
-  // The twin's height is the bump's: the mirror image brings it back.
-  EXPECT_NEAR(test::FillHeight(m, scan_vertices, bump), test::kEggBump, 0.1 * test::kEggBump);
+  ExpectTheBumpBackFromItsTwin(result, m, scan_vertices, bump);
 }
 
 TEST(Symmetry, APartialSymmetryServesAHoleWhoseSurroundingsItMirrors) {
@@ -433,15 +440,7 @@ TEST(Symmetry, APartialSymmetryServesAHoleWhoseSurroundingsItMirrors) {
   std::string log;
   for (const std::string& line : curvature_inpaint::DescribeHoleFill(result)) log += line + "\n";
   EXPECT_NE(log.find("symmetry: none of the whole object; partial"), std::string::npos) << log;
-  ASSERT_EQ(result.holes.size(), 1u);
-  const auto& r = result.holes[0];
-  ASSERT_TRUE(r.problem.empty()) << r.problem;
-  EXPECT_EQ(r.kind.rfind("symmetry", 0), 0u)
-      << "chose " << r.kind << ": "
-      << curvature_inpaint::DescribeValidation(r.candidates, r.validation_errors, r.choice,
-                                               r.fake_holes, r.mirror_fake_holes,
-                                               r.validation_note);
-  EXPECT_NEAR(test::FillHeight(m, scan_vertices, bump), test::kEggBump, 0.1 * test::kEggBump);
+  ExpectTheBumpBackFromItsTwin(result, m, scan_vertices, bump);
 }
 
 TEST(Symmetry, AHoleWhoseTwinIsMissingTooKeepsTheContinuation) {
