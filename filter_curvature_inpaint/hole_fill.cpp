@@ -881,6 +881,8 @@ void CheckHoleFillParams(const HoleFillParams& p) {
   for (double a : p.validation.details) RequireRange(a, 0, 10, "a validated detail amplitude");
   RequireRange(p.symmetry.detection.tolerance, 1e-6, 1, "the symmetry tolerance");
   RequireRange(p.symmetry.detection.min_coverage, 0, 1, "the symmetry's minimum coverage");
+  RequireRange(p.symmetry.detection.min_partial_coverage, 0, 1,
+               "a partial symmetry's minimum coverage");
   RequireRange(p.crease_fill.crease_angle, 1, 179, "the crease angle");
   RequireRange(p.crease_fill.smooth_angle, 0, 179, "the smooth angle");
 }
