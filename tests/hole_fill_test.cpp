@@ -386,6 +386,14 @@ TEST(FakeHoles, TheValidatedChoiceIsTheSameForAnyThreadCount) {
   for (size_t i = 0; i < results[0].size(); ++i) ASSERT_EQ(results[0][i], results[1][i]) << i;
 }
 
+/// The symmetric egg in `m` with a hole over its first bump; returns its vertex count (the
+/// fill's vertices come after).
+size_t EggHoledOverItsFirstBump(CMeshO& m) {
+  test::MakeSymmetricEgg(m);
+  test::PunchBump(m, test::EggBumps()[0]);
+  return m.vert.size();
+}
+
 /// The egg's one hole (over `bump`, `m` filled into `result`) took a symmetry candidate, and
 /// the fill is as high as its twin.
 void ExpectTheBumpBackFromItsTwin(const curvature_inpaint::HoleFillResult& result, const CMeshO& m,
@@ -405,10 +413,8 @@ void ExpectTheBumpBackFromItsTwin(const curvature_inpaint::HoleFillResult& resul
 
 TEST(Symmetry, AHoleOverABumpComesBackLikeItsTwin) {
   CMeshO m;
-  test::MakeSymmetricEgg(m);
   const Eigen::Vector3d bump = test::EggBumps()[0];
-  test::PunchBump(m, bump);
-  const size_t scan_vertices = m.vert.size();
+  const size_t scan_vertices = EggHoledOverItsFirstBump(m);
   HoleFillParams p = SmallImages();
   CMeshO coarse;
   curvature_inpaint::CopyMesh(m, coarse);
@@ -424,10 +430,8 @@ TEST(Symmetry, AHoleOverABumpComesBackLikeItsTwin) {
 
 TEST(Symmetry, APartialSymmetryServesAHoleWhoseSurroundingsItMirrors) {
   CMeshO m;
-  test::MakeSymmetricEgg(m);
   const Eigen::Vector3d bump = test::EggBumps()[0];
-  test::PunchBump(m, bump);
-  const size_t scan_vertices = m.vert.size();
+  const size_t scan_vertices = EggHoledOverItsFirstBump(m);
   HoleFillParams p = SmallImages();
   // No plane can make the object symmetric: the egg's own is found as a partial symmetry.
   p.symmetry.detection.min_coverage = 1;
