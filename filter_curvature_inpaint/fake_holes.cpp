@@ -293,6 +293,9 @@ std::vector<std::unique_ptr<FakeHole>> CutFakeHoles(const CMeshO& m, const vcg_e
 
 double FakeHoleError(const FakeHole& fake, const std::vector<Eigen::Vector3d>& points,
                      const std::vector<std::array<int, 3>>& triangles) {
+  // A fill that went off to infinity is the worst candidate (and would not fit a grid).
+  for (const auto& p : points)
+    if (!p.allFinite()) return std::numeric_limits<double>::infinity();
   Triangles fill;
   for (const auto& t : triangles) fill.push_back({points[t[0]], points[t[1]], points[t[2]]});
   if (fill.empty() || fake.cut.empty()) return std::numeric_limits<double>::infinity();

@@ -248,6 +248,22 @@ TEST(FakeHoles, NeverOverlapARealHoleEachOtherOrTheBorder) {
   }
 }
 
+// A candidate whose fill ran off to infinity (coordinates that end as NaN) is the worst of
+// all, not a distance to compute: the grid of its triangles would ask for memory without end.
+TEST(FakeHoles, AFillOffToInfinityScoresWorstOfAll) {
+  CMeshO m;
+  const auto coarse = WavySheetWithHoles(m, {Point3m(-0.5f, -0.5f, 0)});
+  ASSERT_EQ(coarse.FilledCount(), 1);
+  const vcg_ext::VertexFaces vf(m);
+  std::string why;
+  const auto fakes =
+      curvature_inpaint::CutFakeHoles(m, vf, coarse, 0, curvature_inpaint::FakeHoleParams(), &why);
+  ASSERT_FALSE(fakes.empty()) << why;
+  const Eigen::Vector3d nan = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  const std::vector<Eigen::Vector3d> points{fakes[0]->centre, nan, nan};
+  EXPECT_TRUE(std::isinf(curvature_inpaint::FakeHoleError(*fakes[0], points, {{0, 1, 2}})));
+}
+
 /// A closed surface of revolution about the z axis, radius `profile(z)` for z in [0, length]
 /// (poles at both ends), `rings` rings of `around` vertices, faces facing out.
 template <class Profile>

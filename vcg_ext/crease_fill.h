@@ -68,8 +68,8 @@ struct HeightField {
 /// `free` per vertex: the fill's vertices), oriented consistently; where one smooth region
 /// surrounds the hole, that region extended. A `problem` where the context has no crease, no
 /// smooth region or only part of the hole's border in one, a region is not smooth enough to
-/// extend, or no two of them meet at a crease (one beside the hole, or one inside it that shows
-/// in how the two faces lie).
+/// extend, no two of them meet at a crease (one beside the hole, or one inside it that shows
+/// in how the two faces lie), or their extensions do not meet within the hole's reach.
 inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
                                     const std::vector<std::array<int, 3>>& triangles,
                                     const std::vector<char>& is_fill, const std::vector<char>& free,
@@ -278,6 +278,13 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
       p -= fields[worst].Offset(p) * fields[worst].n;
       on = worst;
     }
+    // Two curved faces whose extensions do not meet near the hole send the alternating
+    // projections off to infinity: their solid says nothing about the hole.
+    if (!p.allFinite() || (p - points[i]).norm() > 2 * radius) {
+      out.points.clear();
+      out.problem = "the faces beside it do not meet near it";
+      return out;
+    }
     out.points[i] = p;
     face_of[i] = on;
   }
@@ -337,8 +344,8 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
                (out.points[i] - p).norm() < (out.points[nearest] - p).norm()))
             nearest = i;
         }
-        if (nearest == points.size() || !((out.points[nearest] - p).norm() < border) ||
-            !keeps_triangles_facing(nearest, p))
+        if (!p.allFinite() || nearest == points.size() ||
+            !((out.points[nearest] - p).norm() < border) || !keeps_triangles_facing(nearest, p))
           continue;
         out.points[nearest] = p;
         on_line[nearest] = 1;
@@ -369,7 +376,7 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
         p -= n.transpose() * gram.inverse() * r;
         if (r.norm() < eps) break;
       }
-      if (!keeps_triangles_facing(moved, p)) continue;
+      if (!p.allFinite() || !keeps_triangles_facing(moved, p)) continue;
       out.points[moved] = p;
       on_line[moved] = 1;
     }
