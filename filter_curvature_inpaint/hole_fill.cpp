@@ -354,6 +354,7 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
   FakeHoleParams fp;
   fp.count = vp.fake_holes;
   fp.seed = params.inpaint.seed;
+  fp.piece = 1 + params.images.segmentation.context;
   if (ctx.symmetry) fp.mirror_planes = MirrorPlanesInMeshUnits(*ctx.symmetry);
   std::string why;
   const auto fakes = CutFakeHoles(*ctx.mesh, *ctx.vf, *ctx.coarse, hi.hole, fp, &why);

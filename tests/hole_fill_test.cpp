@@ -314,6 +314,8 @@ TEST(FakeHoles, NoneIsCutWhereThePiecesBorderIsShorterThanTheHole) {
   ASSERT_EQ(coarse.FilledCount(), 1);
   const vcg_ext::VertexFaces vf(m);
   curvature_inpaint::FakeHoleParams fp;
+  fp.piece = 3;     // a piece that wraps the knob
+  fp.farthest = 10; // and places as far as the knob
   std::string why;
   const auto fakes = curvature_inpaint::CutFakeHoles(m, vf, coarse, 0, fp, &why);
   for (const auto& f : fakes) {
@@ -360,7 +362,7 @@ TEST(FakeHoles, ASmallClosedPartFallsBackToTheVariationScoreAndSaysSo) {
   CMeshO m;
   vcg::tri::Sphere(m, 4);
   vcg::tri::UpdateBounding<CMeshO>::Box(m);
-  vcg_ext::PunchHole(m, Point3m(1, 0, 0), Scalarm(0.5)); // a hole a quarter of the part wide
+  vcg_ext::PunchHole(m, Point3m(1, 0, 0), Scalarm(0.8)); // a hole 0.4 of the part wide
   vcg::tri::UpdateBounding<CMeshO>::Box(m);
   HoleFillParams p = SmallImages();
   const auto result = FillHoles(m, p);
