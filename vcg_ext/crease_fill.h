@@ -334,6 +334,7 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
           p -= inverse * r;
           if (r.norm() < eps) break;
         }
+        if (!p.allFinite()) continue;
         // The point is the hole's where a fill vertex is nearer to it than the hole's border.
         size_t nearest = points.size();
         double border = std::numeric_limits<double>::infinity();
@@ -344,8 +345,8 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
                (out.points[i] - p).norm() < (out.points[nearest] - p).norm()))
             nearest = i;
         }
-        if (!p.allFinite() || nearest == points.size() ||
-            !((out.points[nearest] - p).norm() < border) || !keeps_triangles_facing(nearest, p))
+        if (nearest == points.size() || !((out.points[nearest] - p).norm() < border) ||
+            !keeps_triangles_facing(nearest, p))
           continue;
         out.points[nearest] = p;
         on_line[nearest] = 1;
