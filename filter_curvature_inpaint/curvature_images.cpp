@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <numeric>
 #include <stdexcept>
 #include <unordered_map>
 #include <unordered_set>
@@ -159,10 +160,17 @@ CurvatureImagesResult ComputeCurvatureImages(CMeshO& m, const CurvatureImagesPar
     const double seg_each = std::chrono::duration<double>(Clock::now() - seg_start).count() /
                             std::max<size_t>(filled.size(), 1);
     result.holes.resize(filled.size());
-    // The patches are disjoint and only read the mesh: one per thread.
+    // The patches are disjoint and only read the mesh: one per thread, the largest first, so
+    // that a large hole does not start last and keep one thread busy after the rest are done.
+    std::vector<int> largest_first(filled.size());
+    std::iota(largest_first.begin(), largest_first.end(), 0);
+    std::stable_sort(largest_first.begin(), largest_first.end(), [&](int a, int b) {
+      return regions[size_t(a)].faces.size() > regions[size_t(b)].faces.size();
+    });
     vcg_ext::ParallelFor(
         int(filled.size()), params.coarse.threads,
-        [&](int i) {
+        [&](int task) {
+          const int i = largest_first[size_t(task)];
           const auto t0 = Clock::now();
           HoleImage& hi = result.holes[i];
           hi.hole = index[i];

@@ -248,6 +248,13 @@ struct ValidationContext {
   const SymmetryPrior* symmetry = nullptr;           ///< null where the prior is off
 };
 
+/// The symmetry detection's parameters, on the run's threads.
+vcg_ext::SymmetryParams SymmetryDetection(const HoleFillParams& p) {
+  vcg_ext::SymmetryParams d = p.symmetry.detection;
+  d.threads = p.images.coarse.threads;
+  return d;
+}
+
 /// Whether FillHoles and InpaintHoles look for the object's symmetry with these parameters.
 bool UsesSymmetry(const HoleFillParams& p) {
   return p.symmetry.enabled && !p.oracle && p.inpainted_dir.empty();
@@ -780,7 +787,7 @@ std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& 
   inpaint.pool = pool.get();
   const vcg_ext::VertexFaces vf(scratch);
   const std::unique_ptr<SymmetryPrior> symmetry =
-      UsesSymmetry(params) ? DetectSymmetry(scratch, images.coarse, params.symmetry.detection)
+      UsesSymmetry(params) ? DetectSymmetry(scratch, images.coarse, SymmetryDetection(params))
                            : nullptr;
   const ValidationContext ctx{&scratch, &images.coarse, &vf, symmetry.get()};
   std::vector<HoleVariations> holes;
@@ -939,7 +946,7 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
     if (validates || symmetric) {
       std::call_once(context_once, [&] {
         if (validates) vf = std::make_unique<vcg_ext::VertexFaces>(m);
-        if (symmetric) symmetry = DetectSymmetry(m, coarse, params.symmetry.detection);
+        if (symmetric) symmetry = DetectSymmetry(m, coarse, SymmetryDetection(params));
       });
       ctx = ValidationContext{&m, &coarse, vf.get(), symmetry.get()};
     }

@@ -22,7 +22,10 @@ struct ValidationParams {
   int fake_holes = 4;                        ///< per hole; 0: the variation score chooses alone
   bool coarse = true;                        ///< the coarse fill as it is is a candidate
   std::vector<double> details{0, 0.5, 1, 2}; ///< detail amplitudes of the embedded inpainter
-  int image_size = 256;                      ///< of the fake holes' images (at most the holes')
+  /// Of the fake holes' images (at most the holes'). On the tuning half and 48 development
+  /// holes 128 chose as well as 256 (54 of 64 closer than CGAL either way, median RMS ratio
+  /// 0.634 against 0.652) at two thirds of the whole process's time on ten holes.
+  int image_size = 128;
 };
 
 struct HoleFillParams {

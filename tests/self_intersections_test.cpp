@@ -31,9 +31,26 @@ TEST(SelfIntersections, NoneOnAFlatGridNorOnABentOne) {
 TEST(SelfIntersections, TwoCrossingTrianglesWithoutSharedVertex) {
   const Points p{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, -1}, {0.5, 0.5, 1}, {1.5, 1.5, 1}};
   EXPECT_EQ(vcg_ext::CountSelfIntersections(p, {{0, 1, 2}, {3, 4, 5}}), 1);
-  // Apart along x, so the sweep never pairs them.
+  // Apart along x, their widest axis, so the sweep never pairs them.
   const Points q{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {3, 0, -1}, {3, 0, 1}, {4, 1, 1}};
   EXPECT_EQ(vcg_ext::CountSelfIntersections(q, {{0, 1, 2}, {3, 4, 5}}), 0);
+}
+
+TEST(SelfIntersections, TheSameCountWhicheverAxisThePatchLiesAlong) {
+  // The tents of the test below, the grid turned so that it lies along each pair of axes in
+  // turn: the sweep runs along the widest one, and the count must not depend on it.
+  Points p;
+  Triangles t;
+  Grid(6, p, t);
+  p[3 * 7 + 1] = Eigen::Vector3d(4, 3, 1);
+  p[3 * 7 + 5] = Eigen::Vector3d(2, 3, 2);
+  const int crossings = vcg_ext::CountSelfIntersections(p, t);
+  ASSERT_GT(crossings, 0);
+  for (int turn = 1; turn < 3; ++turn) {
+    Points q = p;
+    for (auto& v : q) v = Eigen::Vector3d(v[(turn + 2) % 3], v[turn % 3], v[(turn + 1) % 3]);
+    EXPECT_EQ(vcg_ext::CountSelfIntersections(q, t), crossings) << "turn " << turn;
+  }
 }
 
 TEST(SelfIntersections, TwoVerticesPulledAcrossEachOtherAreFound) {

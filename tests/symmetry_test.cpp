@@ -72,6 +72,27 @@ TEST(ReflectiveSymmetry, FindsThePlaneOfASymmetricObjectUnderNoise) {
   EXPECT_GT(planes[0].coverage, 0.9);
 }
 
+TEST(ReflectiveSymmetry, ThePlanesDoNotDependOnTheThreads) {
+  test::Mesh m;
+  MakeSymmetricEgg(m);
+  std::vector<Eigen::Vector3d> points, normals;
+  Sample(m, 0.45 * kRotation, Eigen::Vector3d(0.5, 0.4, 0.6), points, normals);
+  vcg_ext::SymmetryParams one, three;
+  one.threads = 1;
+  three.threads = 3;
+  vcg_ext::SymmetryPlane best_one, best_three;
+  const auto a = vcg_ext::DetectReflectiveSymmetry(points, normals, one, &best_one);
+  const auto b = vcg_ext::DetectReflectiveSymmetry(points, normals, three, &best_three);
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_FALSE(a.empty());
+  for (size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a[k].normal, b[k].normal);
+    EXPECT_EQ(a[k].offset, b[k].offset);
+    EXPECT_EQ(a[k].coverage, b[k].coverage);
+  }
+  EXPECT_EQ(best_one.normal, best_three.normal);
+}
+
 TEST(ReflectiveSymmetry, FindsNoneOnATwistedObject) {
   // An ellipsoid twisted about its long axis is chiral: no plane mirrors it onto itself.
   test::Mesh m;

@@ -9,6 +9,8 @@
 // of most of the samples lies on the surface.
 #pragma once
 
+#include "parallel_for.h"
+
 #include <Eigen/Dense>
 #include <vcg/space/index/kdtree/kdtree.h>
 
@@ -92,6 +94,7 @@ struct SymmetryParams {
   int iterations = 30;    ///< of the closest-point registration
   int max_planes = 2;     ///< planes returned of each kind (whole, partial), best first
   uint32_t seed = 1;
+  int threads = 0; ///< that refine the candidates (0: one per core); the planes do not depend on it
 };
 
 namespace detail {
@@ -276,13 +279,17 @@ DetectReflectiveSymmetry(const std::vector<Eigen::Vector3d>& points,
     if (int(guesses.size()) > params.candidates) guesses.resize(size_t(params.candidates));
   }
 
-  std::vector<SymmetryPlane> refined;
-  for (SymmetryPlane plane : guesses) {
-    detail::RefinePlane(samples, normals, index, params, plane);
-    plane = detail::Canonical(plane.normal, plane.offset);
-    detail::MeasurePlane(evaluate, normals, index, params.tolerance, plane);
-    refined.push_back(plane);
-  }
+  // Each guess is refined on its own; the index answers queries from any thread.
+  std::vector<SymmetryPlane> refined(guesses);
+  ParallelFor(
+      int(refined.size()), params.threads,
+      [&](int k) {
+        SymmetryPlane& plane = refined[size_t(k)];
+        detail::RefinePlane(samples, normals, index, params, plane);
+        plane = detail::Canonical(plane.normal, plane.offset);
+        detail::MeasurePlane(evaluate, normals, index, params.tolerance, plane);
+      },
+      [](int, int) { return true; });
   std::stable_sort(
       refined.begin(), refined.end(),
       [](const SymmetryPlane& a, const SymmetryPlane& b) { return a.coverage > b.coverage; });

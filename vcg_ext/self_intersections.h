@@ -4,8 +4,8 @@
 // Two triangles cross when an edge of one passes through the interior of the other (Moeller
 // and Trumbore's segment test); coplanar pairs only touch. Pairs sharing an edge are left to
 // the fold test (a flipped triangle), which is what a crossing between neighbours across an
-// edge amounts to. Candidate pairs come from a sweep over the triangles' extents along x, so
-// a few thousand triangles take milliseconds.
+// edge amounts to. Candidate pairs come from a sweep over the triangles' extents along their widest
+// axis, so a few thousand triangles take milliseconds.
 #pragma once
 
 #include <Eigen/Core>
@@ -65,17 +65,26 @@ inline int CountSelfIntersections(const std::vector<Eigen::Vector3d>& points,
                                   const std::vector<std::array<int, 3>>& triangles,
                                   const std::vector<char>& tested = {}) {
   const size_t n = triangles.size();
+  // The sweep runs along the points' widest axis, where the extents overlap least (a patch
+  // lying across x would make nearly every pair a candidate).
+  Eigen::Vector3d low = Eigen::Vector3d::Constant(INFINITY), high = -low;
+  for (const auto& t : triangles)
+    for (int k = 0; k < 3; ++k)
+      low = low.cwiseMin(points[t[k]]), high = high.cwiseMax(points[t[k]]);
+  int sweep = 0;
+  if (n > 0) (high - low).maxCoeff(&sweep);
   std::vector<double> lo(n), hi(n);
   for (size_t f = 0; f < n; ++f) {
     const auto& t = triangles[f];
-    lo[f] = std::min({points[t[0]].x(), points[t[1]].x(), points[t[2]].x()});
-    hi[f] = std::max({points[t[0]].x(), points[t[1]].x(), points[t[2]].x()});
+    lo[f] = std::min({points[t[0]][sweep], points[t[1]][sweep], points[t[2]][sweep]});
+    hi[f] = std::max({points[t[0]][sweep], points[t[1]][sweep], points[t[2]][sweep]});
   }
   std::vector<size_t> order(n);
   std::iota(order.begin(), order.end(), size_t(0));
   std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return lo[a] < lo[b]; });
   auto box_overlap = [&](const std::array<int, 3>& a, const std::array<int, 3>& b) {
-    for (int axis = 1; axis < 3; ++axis) {
+    for (int axis = 0; axis < 3; ++axis) {
+      if (axis == sweep) continue;
       const double a_lo = std::min({points[a[0]][axis], points[a[1]][axis], points[a[2]][axis]});
       const double a_hi = std::max({points[a[0]][axis], points[a[1]][axis], points[a[2]][axis]});
       const double b_lo = std::min({points[b[0]][axis], points[b[1]][axis], points[b[2]][axis]});

@@ -45,7 +45,7 @@ const char* const kUsage =
     "      --fake-holes K (default 4): fill each hole the way (coarse fill, or detail 0, 0.5,\n"
     "      1, 2) that came closest on K holes of its size cut into known surface near it;\n"
     "      --detail A instead uses amplitude A on every hole (0: the smooth continuation).\n"
-    "      --fake-hole-size PX: the fake holes' images (default 256).\n"
+    "      --fake-hole-size PX: the fake holes' images (default 128).\n"
     "      Where the object is mirror-symmetric and a hole's mirror image is known surface,\n"
     "      its mirrored curvature and surface are two more variations (validated like the\n"
     "      rest, never picked unvalidated); --no-symmetry leaves them out. --exemplar: the\n"
