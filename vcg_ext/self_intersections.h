@@ -4,8 +4,8 @@
 // Two triangles cross when an edge of one passes through the interior of the other (Moeller
 // and Trumbore's segment test); coplanar pairs only touch. Pairs sharing an edge are left to
 // the fold test (a flipped triangle), which is what a crossing between neighbours across an
-// edge amounts to. Candidate pairs come from a sweep over the triangles' extents along their widest
-// axis, so a few thousand triangles take milliseconds.
+// edge amounts to. Candidate pairs come from a sweep over the triangles' extents along the
+// widest axis, so a few thousand triangles take milliseconds.
 #pragma once
 
 #include <Eigen/Core>
@@ -65,8 +65,8 @@ inline int CountSelfIntersections(const std::vector<Eigen::Vector3d>& points,
                                   const std::vector<std::array<int, 3>>& triangles,
                                   const std::vector<char>& tested = {}) {
   const size_t n = triangles.size();
-  // The sweep runs along the points' widest axis, where the extents overlap least (a patch
-  // lying across x would make nearly every pair a candidate).
+  // The sweep runs along the points' widest axis, where the extents overlap least (along x, a
+  // patch in a plane of constant x would make nearly every pair a candidate).
   Eigen::Vector3d low = Eigen::Vector3d::Constant(INFINITY), high = -low;
   for (const auto& t : triangles)
     for (int k = 0; k < 3; ++k)
