@@ -47,13 +47,15 @@ using Triangles = std::vector<std::array<Eigen::Vector3d, 3>>;
 /// queries from points close to them (a fill against the surface it replaces).
 class TriangleGrid {
 public:
-  explicit TriangleGrid(const Triangles& tris) : tris_(tris) {
+  explicit TriangleGrid(const Triangles& tris)
+      : tris_(tris), boxes_(tris.size()), seen_(tris.size(), 0) {
     for (const auto& t : tris)
       for (int k = 0; k < 3; ++k) cell_ = std::max(cell_, (t[k] - t[(k + 1) % 3]).norm());
     if (!(cell_ > 0)) cell_ = 1;
     for (size_t i = 0; i < tris.size(); ++i) {
       Eigen::Vector3d lo = tris[i][0], hi = tris[i][0];
       for (int k = 1; k < 3; ++k) lo = lo.cwiseMin(tris[i][k]), hi = hi.cwiseMax(tris[i][k]);
+      boxes_[i] = {lo, hi};
       const auto a = Cell(lo), b = Cell(hi);
       for (int64_t x = a[0]; x <= b[0]; ++x)
         for (int64_t y = a[1]; y <= b[1]; ++y)
@@ -62,9 +64,10 @@ public:
   }
 
   /// Squared distance from p to the nearest triangle; rings of cells grow until one is found
-  /// and one more ring has been searched.
-  double Distance2(const Eigen::Vector3d& p) const {
+  /// and one more ring has been searched. Not thread-safe (it marks the triangles it visits).
+  double Distance2(const Eigen::Vector3d& p) {
     const auto c = Cell(p);
+    ++query_;
     double best = std::numeric_limits<double>::max();
     for (int ring = 0, found = -1; ring < 64 && (found < 0 || ring <= found + 1); ++ring) {
       for (int64_t x = c[0] - ring; x <= c[0] + ring; ++x)
@@ -75,6 +78,13 @@ public:
             const auto it = cells_.find(Key({x, y, z}));
             if (it == cells_.end()) continue;
             for (int i : it->second) {
+              // A triangle lies in up to eight cells of a ring: it is measured once. Its
+              // bounding box is no farther than it, so one whose box is not nearer than the
+              // nearest so far cannot change the minimum.
+              if (seen_[size_t(i)] == query_) continue;
+              seen_[size_t(i)] = query_;
+              const auto& box = boxes_[size_t(i)];
+              if ((p - p.cwiseMax(box[0]).cwiseMin(box[1])).squaredNorm() >= best) continue;
               const auto& t = tris_[size_t(i)];
               best = std::min(best, PointTriangleDistance2(p, t[0], t[1], t[2]));
             }
@@ -94,6 +104,9 @@ private:
            (uint64_t(c[2]) * 83492791u);
   }
   const Triangles& tris_;
+  std::vector<std::array<Eigen::Vector3d, 2>> boxes_; ///< per triangle: lowest, highest corner
+  std::vector<uint32_t> seen_;                        ///< per triangle: the last query to visit it
+  uint32_t query_ = 0;
   double cell_ = 0;
   std::unordered_map<uint64_t, std::vector<int>> cells_;
 };
@@ -102,7 +115,7 @@ private:
 /// surface `to`.
 double RmsDistance(const Triangles& from, const Triangles& to, size_t samples = 400) {
   if (from.empty()) return 0.0;
-  const TriangleGrid grid(to);
+  TriangleGrid grid(to);
   const size_t stride = std::max<size_t>(1, from.size() / samples);
   double sum = 0;
   size_t n = 0;

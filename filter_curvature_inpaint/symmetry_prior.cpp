@@ -50,7 +50,7 @@ std::unique_ptr<SymmetryPrior> DetectSymmetry(const CMeshO& m,
   }
   if (!prior->points.empty()) {
     prior->index = std::make_unique<vcg_ext::PointIndex>(prior->points);
-    prior->planes = vcg_ext::DetectReflectiveSymmetry(prior->points, prior->normals, params,
+    prior->planes = vcg_ext::DetectReflectiveSymmetry(*prior->index, prior->normals, params,
                                                       &prior->best, &prior->partial);
   }
   prior->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

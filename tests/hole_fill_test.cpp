@@ -264,6 +264,61 @@ TEST(FakeHoles, AFillOffToInfinityScoresWorstOfAll) {
   EXPECT_TRUE(std::isinf(curvature_inpaint::FakeHoleError(*fakes[0], points, {{0, 1, 2}})));
 }
 
+/// Distance from p to triangle abc, as a brute force would measure it: to its plane where the
+/// foot lies inside it, else to the nearest of its edges.
+double DistanceToTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                          const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  const Eigen::Vector3d n = (b - a).cross(c - a).normalized();
+  const Eigen::Vector3d foot = p - (p - a).dot(n) * n;
+  const bool inside = (b - a).cross(foot - a).dot(n) >= 0 && (c - b).cross(foot - b).dot(n) >= 0 &&
+                      (a - c).cross(foot - c).dot(n) >= 0;
+  if (inside) return (p - foot).norm();
+  auto to_edge = [&p](const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
+    const double s = std::max(0.0, std::min(1.0, (p - u).dot(v - u) / (v - u).squaredNorm()));
+    return (p - (u + s * (v - u))).norm();
+  };
+  return std::min({to_edge(a, b), to_edge(b, c), to_edge(c, a)});
+}
+
+// The fake-hole error skips triangles it has measured already and those whose bounds lie
+// farther than the nearest so far: it must still be the RMS distance every triangle gives.
+TEST(FakeHoles, TheErrorIsTheDistanceToEveryTriangleMeasured) {
+  CMeshO m;
+  const auto coarse = WavySheetWithHoles(m, {Point3m(-0.5f, -0.5f, 0)});
+  const vcg_ext::VertexFaces vf(m);
+  std::string why;
+  const auto fakes =
+      curvature_inpaint::CutFakeHoles(m, vf, coarse, 0, curvature_inpaint::FakeHoleParams(), &why);
+  ASSERT_FALSE(fakes.empty()) << why;
+  const auto& cut = fakes[0]->cut;
+  ASSERT_LT(cut.size(), 400u); // every triangle's centre is a sample
+  // A fill: the cut surface raised and tilted, as a candidate that missed it would be.
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::array<int, 3>> triangles;
+  for (const auto& t : cut) {
+    const int first = int(points.size());
+    for (const auto& v : t) points.push_back(v + Eigen::Vector3d(0, 0, 0.01 + 0.2 * v.x()));
+    triangles.push_back({first, first + 1, first + 2});
+  }
+  auto rms = [](const std::vector<std::array<Eigen::Vector3d, 3>>& from,
+                const std::vector<std::array<Eigen::Vector3d, 3>>& to) {
+    double sum = 0;
+    for (const auto& f : from) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const auto& t : to)
+        nearest = std::min(nearest, DistanceToTriangle((f[0] + f[1] + f[2]) / 3, t[0], t[1], t[2]));
+      sum += nearest * nearest;
+    }
+    return std::sqrt(sum / double(from.size()));
+  };
+  std::vector<std::array<Eigen::Vector3d, 3>> fill;
+  for (const auto& t : triangles) fill.push_back({points[t[0]], points[t[1]], points[t[2]]});
+  const double expected = 0.5 * (rms(fill, cut) + rms(cut, fill));
+  ASSERT_GT(expected, 0.001);
+  EXPECT_NEAR(curvature_inpaint::FakeHoleError(*fakes[0], points, triangles), expected,
+              1e-9 * expected);
+}
+
 /// A closed surface of revolution about the z axis, radius `profile(z)` for z in [0, length]
 /// (poles at both ends), `rings` rings of `around` vertices, faces facing out.
 template <class Profile>

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 namespace {
 
 using Points = std::vector<Eigen::Vector3d>;
@@ -79,6 +81,35 @@ TEST(SelfIntersections, TrianglesMeetingAtAVertexCrossWhenOneEdgePiercesTheOther
   // A fan neighbour tilted up out of the plane does not.
   const Points q{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {-1, 0, 1}, {0, -1, 1}};
   EXPECT_EQ(vcg_ext::CountSelfIntersections(q, {{0, 1, 2}, {0, 3, 4}}), 0);
+}
+
+TEST(SelfIntersections, TheSameCountAsEveryPairTestedOnATangledPatch) {
+  // A grid whose inner vertices are thrown about, half its triangles tested: the sweep and the
+  // bounds it skips by must count exactly the crossing pairs a test of every pair finds.
+  Points p;
+  Triangles t;
+  Grid(12, p, t);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> jitter(-1.5, 1.5);
+  for (int y = 1; y < 12; ++y)
+    for (int x = 1; x < 12; ++x)
+      p[size_t(y * 13 + x)] += Eigen::Vector3d(jitter(rng), jitter(rng), jitter(rng));
+  std::vector<char> tested(t.size(), 0);
+  for (size_t f = 0; f < t.size(); ++f) tested[f] = (f / 24) % 2 == 0;
+  int every_pair = 0, every_tested_pair = 0;
+  for (size_t a = 0; a < t.size(); ++a)
+    for (size_t b = a + 1; b < t.size(); ++b) {
+      int shared = 0;
+      for (int x = 0; x < 3; ++x)
+        for (int y = 0; y < 3; ++y) shared += t[a][x] == t[b][y];
+      if (shared >= 2 || !vcg_ext::detail::TrianglesCross(p, t[a], t[b])) continue;
+      ++every_pair;
+      every_tested_pair += tested[a] || tested[b];
+    }
+  ASSERT_GT(every_tested_pair, 10);
+  ASSERT_LT(every_tested_pair, every_pair);
+  EXPECT_EQ(vcg_ext::CountSelfIntersections(p, t), every_pair);
+  EXPECT_EQ(vcg_ext::CountSelfIntersections(p, t, tested), every_tested_pair);
 }
 
 } // namespace

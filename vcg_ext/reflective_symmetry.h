@@ -188,21 +188,21 @@ inline SymmetryPlane Canonical(Eigen::Vector3d n, double offset) {
 
 } // namespace detail
 
-/// The reflective symmetry planes of the surface sampled by `points` (with unit `normals`),
-/// best coverage first; none when no plane maps `params.min_coverage` of the samples onto the
-/// surface (`best`, if given, gets the best-covering plane, accepted or not; `partial`, if
-/// given, the planes that map at least `params.min_partial_coverage` but less than
-/// `min_coverage`). The points should sample the surface about evenly (a scan's vertices do);
-/// holes lower the coverage by the share of the surface whose mirror image they removed.
-/// Precondition: points and normals have the same, non-zero size.
+/// The reflective symmetry planes of the surface sampled by the points of `index` (with unit
+/// `normals`), best coverage first; none when no plane maps `params.min_coverage` of the
+/// samples onto the surface (`best`, if given, gets the best-covering plane, accepted or not;
+/// `partial`, if given, the planes that map at least `params.min_partial_coverage` but less
+/// than `min_coverage`). The points should sample the surface about evenly (a scan's vertices
+/// do); holes lower the coverage by the share of the surface whose mirror image they removed.
+/// The index is the caller's, who keeps it for looking up mirror images on the same surface.
+/// Precondition: `normals` has the size of `index.Points()`.
 inline std::vector<SymmetryPlane>
-DetectReflectiveSymmetry(const std::vector<Eigen::Vector3d>& points,
-                         const std::vector<Eigen::Vector3d>& normals, const SymmetryParams& params,
-                         SymmetryPlane* best = nullptr,
+DetectReflectiveSymmetry(const PointIndex& index, const std::vector<Eigen::Vector3d>& normals,
+                         const SymmetryParams& params, SymmetryPlane* best = nullptr,
                          std::vector<SymmetryPlane>* partial = nullptr) {
   std::vector<SymmetryPlane> found;
+  const std::vector<Eigen::Vector3d>& points = index.Points();
   if (points.size() < 16 || normals.size() != points.size()) return found;
-  const PointIndex index(points);
   std::mt19937 rng(params.seed);
   std::vector<int> order(points.size());
   for (size_t i = 0; i < order.size(); ++i) order[i] = int(i);
@@ -271,8 +271,12 @@ DetectReflectiveSymmetry(const std::vector<Eigen::Vector3d>& points,
   {
     const std::vector<int> quick(samples.begin(),
                                  samples.begin() + std::min<size_t>(samples.size(), 300));
-    for (SymmetryPlane& g : guesses)
-      detail::MeasurePlane(quick, normals, index, 2 * params.tolerance, g);
+    ParallelFor(
+        int(guesses.size()), params.threads,
+        [&](int k) {
+          detail::MeasurePlane(quick, normals, index, 2 * params.tolerance, guesses[size_t(k)]);
+        },
+        [](int, int) { return true; });
     std::stable_sort(
         guesses.begin(), guesses.end(),
         [](const SymmetryPlane& a, const SymmetryPlane& b) { return a.coverage > b.coverage; });
@@ -312,6 +316,17 @@ DetectReflectiveSymmetry(const std::vector<Eigen::Vector3d>& points,
   if (partial) *partial = partial_found;
   if (best && !refined.empty()) *best = refined.front();
   return found;
+}
+
+/// The same, for `points` with no index yet (none when they are fewer than 16 or `normals` has
+/// another size).
+inline std::vector<SymmetryPlane>
+DetectReflectiveSymmetry(const std::vector<Eigen::Vector3d>& points,
+                         const std::vector<Eigen::Vector3d>& normals, const SymmetryParams& params,
+                         SymmetryPlane* best = nullptr,
+                         std::vector<SymmetryPlane>* partial = nullptr) {
+  if (points.size() < 16 || normals.size() != points.size()) return {};
+  return DetectReflectiveSymmetry(PointIndex(points), normals, params, best, partial);
 }
 
 } // namespace vcg_ext

@@ -65,43 +65,40 @@ inline int CountSelfIntersections(const std::vector<Eigen::Vector3d>& points,
                                   const std::vector<std::array<int, 3>>& triangles,
                                   const std::vector<char>& tested = {}) {
   const size_t n = triangles.size();
-  // The sweep runs along the points' widest axis, where the extents overlap least (along x, a
-  // patch in a plane of constant x would make nearly every pair a candidate).
-  Eigen::Vector3d low = Eigen::Vector3d::Constant(INFINITY), high = -low;
-  for (const auto& t : triangles)
-    for (int k = 0; k < 3; ++k)
-      low = low.cwiseMin(points[t[k]]), high = high.cwiseMax(points[t[k]]);
-  int sweep = 0;
-  if (n > 0) (high - low).maxCoeff(&sweep);
-  std::vector<double> lo(n), hi(n);
+  // Each triangle's bounding box, once: a pair's boxes are compared many times in the sweep.
+  std::vector<Eigen::Vector3d> box_lo(n), box_hi(n);
+  Eigen::Vector3d tested_lo = Eigen::Vector3d::Constant(INFINITY), tested_hi = -tested_lo;
   for (size_t f = 0; f < n; ++f) {
     const auto& t = triangles[f];
-    lo[f] = std::min({points[t[0]][sweep], points[t[1]][sweep], points[t[2]][sweep]});
-    hi[f] = std::max({points[t[0]][sweep], points[t[1]][sweep], points[t[2]][sweep]});
+    box_lo[f] = points[t[0]].cwiseMin(points[t[1]]).cwiseMin(points[t[2]]);
+    box_hi[f] = points[t[0]].cwiseMax(points[t[1]]).cwiseMax(points[t[2]]);
+    if (tested.empty() || tested[f])
+      tested_lo = tested_lo.cwiseMin(box_lo[f]), tested_hi = tested_hi.cwiseMax(box_hi[f]);
   }
-  std::vector<size_t> order(n);
-  std::iota(order.begin(), order.end(), size_t(0));
-  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return lo[a] < lo[b]; });
-  auto box_overlap = [&](const std::array<int, 3>& a, const std::array<int, 3>& b) {
-    for (int axis = 0; axis < 3; ++axis) {
-      if (axis == sweep) continue;
-      const double a_lo = std::min({points[a[0]][axis], points[a[1]][axis], points[a[2]][axis]});
-      const double a_hi = std::max({points[a[0]][axis], points[a[1]][axis], points[a[2]][axis]});
-      const double b_lo = std::min({points[b[0]][axis], points[b[1]][axis], points[b[2]][axis]});
-      const double b_hi = std::max({points[b[0]][axis], points[b[1]][axis], points[b[2]][axis]});
-      if (a_hi < b_lo || b_hi < a_lo) return false;
-    }
-    return true;
+  auto box_overlap = [&](const Eigen::Vector3d& a_lo, const Eigen::Vector3d& a_hi,
+                         const Eigen::Vector3d& b_lo, const Eigen::Vector3d& b_hi) {
+    return (a_lo.array() <= b_hi.array()).all() && (b_lo.array() <= a_hi.array()).all();
   };
+  // Only triangles within the tested ones' bounds can cross one of them (a patch's context
+  // ring mostly lies outside its fill's).
+  std::vector<size_t> order;
+  for (size_t f = 0; f < n; ++f)
+    if (box_overlap(box_lo[f], box_hi[f], tested_lo, tested_hi)) order.push_back(f);
+  // The sweep runs along the widest axis of those, where the extents overlap least (along x, a
+  // patch in a plane of constant x would make nearly every pair a candidate).
+  int sweep = 0;
+  if (!order.empty()) (tested_hi - tested_lo).maxCoeff(&sweep);
+  std::sort(order.begin(), order.end(),
+            [&](size_t a, size_t b) { return box_lo[a][sweep] < box_lo[b][sweep]; });
   int crossings = 0;
-  for (size_t i = 0; i < n; ++i) {
+  for (size_t i = 0; i < order.size(); ++i) {
     const size_t fa = order[i];
-    for (size_t j = i + 1; j < n && lo[order[j]] <= hi[fa]; ++j) {
+    for (size_t j = i + 1; j < order.size() && box_lo[order[j]][sweep] <= box_hi[fa][sweep]; ++j) {
       const size_t fb = order[j];
       if (!tested.empty() && !tested[fa] && !tested[fb]) continue;
+      if (!box_overlap(box_lo[fa], box_hi[fa], box_lo[fb], box_hi[fb])) continue;
       const auto& a = triangles[fa];
       const auto& b = triangles[fb];
-      if (!box_overlap(a, b)) continue;
       int shared = 0;
       for (int x = 0; x < 3; ++x)
         for (int y = 0; y < 3; ++y) shared += a[x] == b[y];
