@@ -1,6 +1,7 @@
 #include "hole_fill.h"
 
 #include "fake_holes.h"
+#include "inpaint/curvature_reading.h"
 #include "inpaint/server_pool.h"
 #include "pipeline.h"
 
@@ -24,7 +25,6 @@
 #include <memory>
 #include <mutex>
 #include <sstream>
-#include <unordered_map>
 
 namespace curvature_inpaint {
 
@@ -805,37 +805,17 @@ std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& 
 double ScoreVariation(const QImage& variation, const QImage& mask) {
   const int n = mask.width();
   if (variation.size() != mask.size() || mask.height() != n) return -1e9;
-  const QImage mask32 = mask.convertToFormat(QImage::Format_ARGB32);
-  const QImage variation32 = variation.convertToFormat(QImage::Format_ARGB32);
-  std::vector<char> hole(size_t(n) * n);
-  for (int y = 0; y < n; ++y) {
-    const QRgb* row = reinterpret_cast<const QRgb*>(mask32.constScanLine(y));
-    for (int x = 0; x < n; ++x) hole[size_t(y) * n + x] = qGray(row[x]) > 127;
-  }
-  std::vector<double> value(size_t(n) * n);
+  const CurvatureReading r = ReadCurvatureImage(variation, mask);
+  const std::vector<double>& value = r.t;
+  const std::vector<char>& hole = r.hole;
   std::vector<double> known;
   double palette = 0;
   int hole_pixels = 0;
-  // A smooth image repeats its colours: each is inverted once.
-  std::unordered_map<QRgb, vcg_ext::CurvatureColormap::Inverse> inverse;
-  for (int y = 0; y < n; ++y) {
-    const QRgb* row = reinterpret_cast<const QRgb*>(variation32.constScanLine(y));
-    for (int x = 0; x < n; ++x) {
-      const QRgb c = row[x] & RGB_MASK;
-      auto it = inverse.find(c);
-      if (it == inverse.end())
-        it = inverse
-                 .emplace(c, vcg_ext::CurvatureColormap::Invert(
-                                 Eigen::Vector3d(qRed(c), qGreen(c), qBlue(c))))
-                 .first;
-      const auto& inv = it->second;
-      value[size_t(y) * n + x] = inv.t;
-      if (hole[size_t(y) * n + x])
-        palette += inv.distance, ++hole_pixels;
-      else
-        known.push_back(inv.t);
-    }
-  }
+  for (size_t i = 0; i < value.size(); ++i)
+    if (hole[i])
+      palette += r.distance[i], ++hole_pixels;
+    else
+      known.push_back(value[i]);
   if (hole_pixels == 0 || known.empty()) return 0;
   auto percentile = [&known](size_t k) {
     std::nth_element(known.begin(), known.begin() + k, known.end());

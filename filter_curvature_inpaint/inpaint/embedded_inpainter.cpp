@@ -13,6 +13,8 @@
 //    detail amplitude. Each seed gives another variation.
 #include "inpainter.h"
 
+#include "curvature_reading.h"
+
 #include <vcg_ext/exemplar_inpainting.h>
 
 #include <vcg_ext/curvature_colormap.h>
@@ -56,27 +58,23 @@ struct Field {
 };
 
 Field ReadField(const QImage& image, const QImage& mask) {
+  const CurvatureReading r = ReadCurvatureImage(image, mask);
   Field f;
-  f.w = image.width();
-  f.h = image.height();
-  f.v.assign(size_t(f.w) * f.h, 0.5);
-  f.known.assign(size_t(f.w) * f.h, 0);
-  f.prior.assign(size_t(f.w) * f.h, 0.5);
-  f.prior_weight.assign(size_t(f.w) * f.h, 0.0);
-  for (int y = 0; y < f.h; ++y)
-    for (int x = 0; x < f.w; ++x) {
-      const QRgb c = image.pixel(x, y);
-      const auto inv =
-          vcg_ext::CurvatureColormap::Invert(Eigen::Vector3d(qRed(c), qGreen(c), qBlue(c)));
-      const size_t i = size_t(y) * f.w + x;
-      if (qGray(mask.pixel(x, y)) > 127) {
-        // A hole pixel still painted with the colour map carries the coarse fill's curvature.
-        if (inv.distance < kOnColormap) f.prior[i] = inv.t, f.prior_weight[i] = kCoarsePrior;
-        continue;
-      }
-      f.v[i] = inv.t;
-      f.known[i] = 1;
+  f.w = r.width;
+  f.h = r.height;
+  f.v.assign(r.t.size(), 0.5);
+  f.known.assign(r.t.size(), 0);
+  f.prior.assign(r.t.size(), 0.5);
+  f.prior_weight.assign(r.t.size(), 0.0);
+  for (size_t i = 0; i < r.t.size(); ++i) {
+    if (r.hole[i]) {
+      // A hole pixel still painted with the colour map carries the coarse fill's curvature.
+      if (r.distance[i] < kOnColormap) f.prior[i] = r.t[i], f.prior_weight[i] = kCoarsePrior;
+      continue;
     }
+    f.v[i] = r.t[i];
+    f.known[i] = 1;
+  }
   return f;
 }
 
@@ -265,7 +263,7 @@ namespace {
 /// (variation-major), from one continuation.
 std::vector<QImage> Complete(const QImage& image, const QImage& mask, const InpaintParams& p,
                              int variations, const std::vector<double>& amplitudes) {
-  Field f = ReadField(image.convertToFormat(QImage::Format_RGB32), mask);
+  Field f = ReadField(image, mask);
   const int longest = std::max(f.w, f.h);
   const int factor = std::max(1, (longest + 255) / 256);
   // The pixels right at the hole's border carry the seam between the scan and its coarse fill
@@ -359,7 +357,7 @@ std::vector<QImage> InpaintEmbeddedAmplitudes(const QImage& image, const QImage&
 
 std::vector<QImage> InpaintExemplarVariations(const QImage& image, const QImage& mask,
                                               const InpaintParams& p, int count) {
-  const Field f = ReadField(image.convertToFormat(QImage::Format_RGB32), mask);
+  const Field f = ReadField(image, mask);
   // Patches of a few vertex spacings on a grid of at most 256 pixels: finer patches would
   // copy what the fill's vertices cannot carry, and cost more than the whole continuation.
   const int longest = std::max(f.w, f.h);
