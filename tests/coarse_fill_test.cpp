@@ -282,6 +282,33 @@ TEST(CoarseFill, PlanarCapCanBeFairedOnRequest) {
   EXPECT_LT(lowest, -0.05) << "a thin plate continues the walls below the base";
 }
 
+// A round hole in a gently curved sheet (normals about 1 degree off the loop's plane beside it,
+// as on the fandisk's curved faces) has a planar loop too: it is no flat cap, and the thin
+// plate brings the dome back where a flat cap would cut it off.
+TEST(CoarseFill, AHoleInAGentlyCurvedSheetIsNoFlatCap) {
+  Mesh m;
+  test::MakePlane(m, 50, 1.0f);
+  const double k = 0.1; // z = -k r^2: slope 2 k r, about 1.1 degrees at the hole's border
+  for (auto& v : m.vert) {
+    const double x = v.P()[0] - 0.5, y = v.P()[1] - 0.5;
+    v.P()[2] = float(-k * (x * x + y * y));
+  }
+  // Every loop vertex lies 0.1 or more from the centre: at or below z = -0.001.
+  vcg_ext::PunchHole(m, vcg::Point3f(0.5f, 0.5f, 0), 0.1f);
+  vcg_ext::CoarseFillParams params;
+  params.max_hole_edges = 100; // the sheet's outer border is not a hole to fill
+
+  const auto result = vcg_ext::CoarseFill(m, params);
+
+  ASSERT_EQ(result.FilledCount(), 1);
+  EXPECT_FALSE(result.holes[0].planar_cap);
+  double top = -1;
+  for (int v : result.holes[0].new_vertices) top = std::max(top, double(m.vert[v].cP()[2]));
+  // The dome rises towards z = 0 at the centre; a flat cap would stay at or below -0.001.
+  EXPECT_GT(top, -0.0005);
+  EXPECT_LT(top, 0.0002);
+}
+
 } // namespace
 
 namespace {

@@ -158,10 +158,11 @@ constexpr int kDpFallbackMaxEdges = 600;
 constexpr int kIteratedFairingMaxVertices = 20000;
 
 /// Whether a loop is planar (within 0.5 % of its size) and the faces beside it either lie in
-/// its plane (within 2 degrees on average) or leave it at a crease (more than 35 degrees): then
-/// the missing surface is a flat cap, which a membrane reproduces exactly and a thin plate
+/// its plane (within 0.25 degrees on average) or leave it at a crease (more than 35 degrees):
+/// then the missing surface is a flat cap, which a membrane reproduces exactly and a thin plate
 /// would bulge to continue the walls. In between, the surroundings curve smoothly into the
-/// hole (a small hole on a sphere has a planar loop too) and the thin plate is right.
+/// hole (a small hole on a sphere has a planar loop too) and the thin plate is right: on the
+/// fandisk's gently curved faces the sides tilt about 0.9 degrees, a flat face's 0.01.
 inline bool IsPlanarCap(const std::vector<Eigen::Vector3d>& points,
                         const std::vector<Eigen::Vector3d>& side_normals) {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
@@ -177,7 +178,7 @@ inline bool IsPlanarCap(const std::vector<Eigen::Vector3d>& points,
   for (const auto& n : side_normals) alignment += std::abs(n.dot(normal));
   alignment /= double(side_normals.size());
   const bool crease = alignment < std::cos(35 * M_PI / 180);
-  const bool coplanar = alignment > std::cos(2 * M_PI / 180);
+  const bool coplanar = alignment > std::cos(0.25 * M_PI / 180);
   return off_plane <= 0.005 * box.diagonal().norm() && (crease || coplanar);
 }
 
