@@ -32,6 +32,10 @@ struct CreaseFillParams {
   /// A region's fit may leave this RMS, in hole radii: what is not that smooth is no face of a
   /// machined part, and its extension would not predict the hole.
   double max_fit_residual = 0.02;
+  /// Rounds of umbrella smoothing of the fill's vertices over the solid's boundary (each to
+  /// its neighbours' mean, then back onto the solid): they spread the vertices that the
+  /// projection piles up on a crease's line. 0: none.
+  int relax_rounds = 0;
 };
 
 struct CreaseFill {
@@ -259,34 +263,62 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
       if (std::abs(fields[k].Offset(p)) < std::abs(fields[on].Offset(p))) on = k;
     return on;
   };
-  std::vector<size_t> face_of(points.size(), nr); // the face a fill vertex ended on
-  for (size_t i = 0; i < points.size(); ++i) {
-    if (!free[i]) continue;
-    Eigen::Vector3d p = points[i];
-    size_t on = nearest_face(p);
-    p -= fields[on].Offset(p) * fields[on].n;
+  // A point onto the solid's boundary, and the face it ends on; false where it runs off.
+  auto onto_solid = [&](const Eigen::Vector3d& from, Eigen::Vector3d* p, size_t* on) {
+    *p = from;
+    *on = nearest_face(*p);
+    *p -= fields[*on].Offset(*p) * fields[*on].n;
     for (int it = 0; it < 64; ++it) {
       size_t worst = nr;
       double violation = eps;
       for (size_t k = 0; k < nr; ++k) {
-        const double meet = sense[on * nr + k];
-        if (k == on || meet == 0) continue;
-        const double s = fields[k].Offset(p), v = meet > 0 ? s : -s;
+        const double meet = sense[*on * nr + k];
+        if (k == *on || meet == 0) continue;
+        const double s = fields[k].Offset(*p), v = meet > 0 ? s : -s;
         if (v > violation) violation = v, worst = k;
       }
       if (worst == nr) break;
-      p -= fields[worst].Offset(p) * fields[worst].n;
-      on = worst;
+      *p -= fields[worst].Offset(*p) * fields[worst].n;
+      *on = worst;
     }
+    return p->allFinite() && (*p - from).norm() <= 2 * radius;
+  };
+  std::vector<size_t> face_of(points.size(), nr); // the face a fill vertex ended on
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (!free[i]) continue;
     // Two curved faces whose extensions do not meet near the hole send the alternating
     // projections off to infinity: their solid says nothing about the hole.
-    if (!p.allFinite() || (p - points[i]).norm() > 2 * radius) {
+    if (!onto_solid(points[i], &out.points[i], &face_of[i])) {
       out.points.clear();
       out.problem = "the faces beside it do not meet near it";
       return out;
     }
-    out.points[i] = p;
-    face_of[i] = on;
+  }
+  // Projected one by one, the fill vertices near a crease pile up on its line and the
+  // triangles between them fold or cross (on the fandisk, into dozens of crossings: the
+  // caller then backed the whole fill off half its way, 20-36 degrees off the crease's
+  // angle). Rounds of umbrella smoothing, each point put back onto the solid, spread them out.
+  std::vector<std::vector<int>> neighbours(points.size());
+  for (size_t t = 0; t < nt; ++t)
+    if (is_fill[t])
+      for (int k = 0; k < 3; ++k) {
+        const int a = triangles[t][size_t(k)], b = triangles[t][size_t((k + 1) % 3)];
+        neighbours[size_t(a)].push_back(b), neighbours[size_t(b)].push_back(a);
+      }
+  for (int round = 0; round < params.relax_rounds; ++round) {
+    std::vector<Eigen::Vector3d> next = out.points;
+    std::vector<size_t> next_face = face_of;
+    for (size_t i = 0; i < points.size(); ++i) {
+      if (!free[i] || neighbours[i].empty()) continue;
+      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+      for (int j : neighbours[i]) mean += out.points[size_t(j)];
+      mean /= double(neighbours[i].size());
+      Eigen::Vector3d p;
+      size_t on = nr;
+      if (onto_solid(mean, &p, &on)) next[i] = p, next_face[i] = on;
+    }
+    out.points.swap(next);
+    face_of.swap(next_face);
   }
 
   // The fill's triangles do not follow the crease: an edge whose ends lie on two faces that
