@@ -169,10 +169,6 @@ private:
 
 /// Backs `moved` (the patch with its fill moved) off towards the coarse fill, halving the way,
 /// while `check` finds it broken. Returns the halvings, or -1 when four did not undo it.
-// Rounds of spreading for a crease fill that folds: chosen on the development holes of the
-// fandisk (5 to 20 mend the same ones; 10 kept nefertiti_203 of the tuning half least backed off).
-constexpr int kCreaseRelaxRounds = 10;
-
 int BackOff(const vcg_ext::PatchMesh& patch, std::vector<Eigen::Vector3d>& moved,
             FoldCheck& check) {
   int halvings = 0;
@@ -288,6 +284,10 @@ QImage SurfaceImage(const HoleImage& hi, const std::vector<Eigen::Vector3d>& poi
   return KnownPixelsKept(FinalCurvatureImage(hi, points, params.images.apss),
                          ToQImage(hi.image, false), MaskImage(hi.image));
 }
+
+// Rounds of spreading of the crease fill's vertices: chosen on the development holes of the
+// fandisk (5 to 20 mend the same ones; 10 kept nefertiti_203 of the tuning half least backed off).
+constexpr int kCreaseRelaxRounds = 10;
 
 /// The patch's fill carried across the creases of its context (FillAcrossCreases), backed
 /// off where it would fold or cross the patch; empty points with a `problem` where it has none.
