@@ -651,41 +651,68 @@ curvature_inpaint::HoleFillResult FillWithoutSymmetry(CMeshO& m,
   return FillHoles(m, p);
 }
 
+/// The distance of each fill vertex to the fandisk when a hole of 5 % of its diagonal around
+/// `seed_vertex` is filled with the crease prior's variation, in diagonals.
+std::vector<double> FandiskCreaseFillErrors(int seed_vertex) {
+  CMeshO truth;
+  curvature_inpaint::LoadMesh(std::string(CI_SHARED_MESHES) + "/fandisk.ply", truth);
+  vcg::tri::UpdateBounding<CMeshO>::Box(truth);
+  const double diagonal = truth.bbox.Diag();
+  CMeshO m;
+  curvature_inpaint::CopyMesh(truth, m);
+  vcg_ext::PunchHole(m, m.vert[size_t(seed_vertex)].cP(), Scalarm(0.05 * diagonal));
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+  const size_t scan_vertices = m.vert.size();
+  HoleFillParams p = SmallImages();
+  p.pick_kind = "creases";
+  p.validation.fake_holes = 0;
+  const auto result = FillHoles(m, p);
+  EXPECT_EQ(result.holes.size(), 1u);
+  if (result.holes.size() != 1 || result.holes[0].kind != "creases") {
+    ADD_FAILURE() << "no crease fill: " << (result.holes.empty() ? "" : result.holes[0].problem);
+    return {};
+  }
+  std::vector<double> errors;
+  for (size_t v = scan_vertices; v < m.vert.size(); ++v) {
+    const Eigen::Vector3d q(m.vert[v].cP()[0], m.vert[v].cP()[1], m.vert[v].cP()[2]);
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const auto& f : truth.face) {
+      Eigen::Vector3d c[3];
+      for (int k = 0; k < 3; ++k) c[k] = Eigen::Vector3d(f.cP(k)[0], f.cP(k)[1], f.cP(k)[2]);
+      nearest = std::min(nearest, DistanceToTriangle(q, c[0], c[1], c[2]));
+    }
+    errors.push_back(nearest / diagonal);
+  }
+  return errors;
+}
+
 // Two holes in the fandisk (from draws of the benchmark's rule outside its table) where the
 // faces' extensions, each fill vertex projected on its own, piled vertices up on the creases'
 // lines and folded the triangles between them: backed off half its way, the fill came back
 // 1.1 and 1.6 % of the diagonal off the part, the creases 30-36 degrees rounder. Spread over
 // the faces, every fill vertex lies within 0.6 % of the part.
 TEST(Creases, AFillThatFoldsOnItsCreasesIsSpreadOverTheFacesNotBackedOff) {
-  CMeshO truth;
-  curvature_inpaint::LoadMesh(std::string(CI_SHARED_MESHES) + "/fandisk.ply", truth);
-  vcg::tri::UpdateBounding<CMeshO>::Box(truth);
-  const double diagonal = truth.bbox.Diag();
   for (int seed_vertex : {2625, 158}) {
     SCOPED_TRACE(seed_vertex);
-    CMeshO m;
-    curvature_inpaint::CopyMesh(truth, m);
-    vcg_ext::PunchHole(m, m.vert[size_t(seed_vertex)].cP(), Scalarm(0.05 * diagonal));
-    vcg::tri::UpdateBounding<CMeshO>::Box(m);
-    const size_t scan_vertices = m.vert.size();
-    HoleFillParams p = SmallImages();
-    p.pick_kind = "creases";
-    p.validation.fake_holes = 0;
-    const auto result = FillHoles(m, p);
-    ASSERT_EQ(result.holes.size(), 1u);
-    ASSERT_EQ(result.holes[0].kind, "creases") << result.holes[0].problem;
-    double farthest = 0;
-    for (size_t v = scan_vertices; v < m.vert.size(); ++v) {
-      const Eigen::Vector3d q(m.vert[v].cP()[0], m.vert[v].cP()[1], m.vert[v].cP()[2]);
-      double nearest = std::numeric_limits<double>::infinity();
-      for (const auto& f : truth.face) {
-        Eigen::Vector3d c[3];
-        for (int k = 0; k < 3; ++k) c[k] = Eigen::Vector3d(f.cP(k)[0], f.cP(k)[1], f.cP(k)[2]);
-        nearest = std::min(nearest, DistanceToTriangle(q, c[0], c[1], c[2]));
-      }
-      farthest = std::max(farthest, nearest);
-    }
-    EXPECT_LT(farthest, 0.006 * diagonal);
+    const std::vector<double> errors = FandiskCreaseFillErrors(seed_vertex);
+    ASSERT_FALSE(errors.empty());
+    EXPECT_LT(*std::max_element(errors.begin(), errors.end()), 0.006);
+  }
+}
+
+// Two more fandisk holes where several creases cross and the crease fill, even spread, folds
+// where they crowd: backed off as a whole, every crease came back rounded (13 and 19 degrees
+// off); backed off where it folds, the rest of the fill stays on the part.
+TEST(Creases, AFillThatFoldsInOneCornerIsBackedOffThereNotAsAWhole) {
+  for (int seed_vertex : {2451, 4515}) {
+    SCOPED_TRACE(seed_vertex);
+    const std::vector<double> errors = FandiskCreaseFillErrors(seed_vertex);
+    ASSERT_FALSE(errors.empty());
+    const double on_part =
+        double(std::count_if(errors.begin(), errors.end(), [](double e) { return e < 0.001; })) /
+        double(errors.size());
+    // 0.99 and 0.88 of them within 0.1 % of the diagonal; backed off as a whole, 0.45 and 0.58.
+    EXPECT_GT(on_part, 0.8);
   }
 }
 

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace vcg_ext {
@@ -59,10 +60,12 @@ inline bool TrianglesCross(const std::vector<Eigen::Vector3d>& p, const std::arr
 } // namespace detail
 
 /// Counts the pairs of triangles of (points, triangles) that cross, among pairs with at least
-/// one triangle flagged in `tested` (e.g. a patch's fill triangles; empty: all).
+/// one triangle flagged in `tested` (e.g. a patch's fill triangles; empty: all). Where `pairs`
+/// is given, it receives each crossing pair's triangle indices (the lower first), sorted.
 inline int CountSelfIntersections(const std::vector<Eigen::Vector3d>& points,
                                   const std::vector<std::array<int, 3>>& triangles,
-                                  const std::vector<char>& tested = {}) {
+                                  const std::vector<char>& tested = {},
+                                  std::vector<std::pair<int, int>>* pairs = nullptr) {
   const size_t n = triangles.size();
   // Each triangle's bounding box, once: a pair's boxes are compared many times in the sweep.
   std::vector<Eigen::Vector3d> box_lo(n), box_hi(n);
@@ -103,8 +106,10 @@ inline int CountSelfIntersections(const std::vector<Eigen::Vector3d>& points,
         for (int y = 0; y < 3; ++y) shared += a[x] == b[y];
       const bool cross = shared < 2 && detail::TrianglesCross(points, a, b);
       crossings += cross;
+      if (cross && pairs) pairs->emplace_back(int(std::min(fa, fb)), int(std::max(fa, fb)));
     }
   }
+  if (pairs) std::sort(pairs->begin(), pairs->end());
   return crossings;
 }
 
