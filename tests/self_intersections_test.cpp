@@ -74,6 +74,15 @@ TEST(SelfIntersections, CountsOnlyPairsWithATestedTriangle) {
   EXPECT_EQ(vcg_ext::CountSelfIntersections(p, t, {1, 0}), 1);
 }
 
+TEST(SelfIntersections, NamesTheTrianglesOfEachCrossing) {
+  // A flat triangle, one far from it, and one that pierces the first: the pair (0, 2).
+  const Points p{{0, 0, 0},  {2, 0, 0},      {0, 2, 0},     {9, 9, 0},    {10, 9, 0},
+                 {9, 10, 0}, {0.5, 0.5, -1}, {0.5, 0.5, 1}, {1.5, 1.5, 1}};
+  std::vector<std::pair<int, int>> pairs;
+  EXPECT_EQ(vcg_ext::CountSelfIntersections(p, {{6, 7, 8}, {3, 4, 5}, {0, 1, 2}}, {}, &pairs), 1);
+  EXPECT_EQ(pairs, (std::vector<std::pair<int, int>>{{0, 2}}));
+}
+
 TEST(SelfIntersections, TrianglesMeetingAtAVertexCrossWhenOneEdgePiercesTheOther) {
   // Both triangles have vertex 0; the second's far edge passes through the first.
   const Points p{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, -1}, {0.5, 0.5, 1}};
