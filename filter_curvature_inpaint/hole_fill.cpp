@@ -50,16 +50,19 @@ double SampleValue(const QImage& img, const Eigen::Vector2d& uv) {
          fy * ((1 - fx) * value(x0, y1) + fx * value(x1, y1));
 }
 
-/// Fill triangles whose orientation the deformation reversed.
+/// Fill triangles whose orientation the deformation reversed; where `marked` is given (one
+/// flag per patch triangle), each of them is flagged there.
 int Folded(const std::vector<Eigen::Vector3d>& before, const std::vector<Eigen::Vector3d>& after,
-           const vcg_ext::PatchMesh& patch) {
+           const vcg_ext::PatchMesh& patch, std::vector<char>* marked = nullptr) {
   int folded = 0;
   for (size_t f = 0; f < patch.triangles.size(); ++f) {
     if (!patch.is_fill[f]) continue;
     const auto& t = patch.triangles[f];
     const Eigen::Vector3d a = vcg_ext::TriangleNormal(before[t[0]], before[t[1]], before[t[2]]);
     const Eigen::Vector3d b = vcg_ext::TriangleNormal(after[t[0]], after[t[1]], after[t[2]]);
-    folded += a.dot(b) <= 0;
+    const bool reversed = a.dot(b) <= 0;
+    folded += reversed;
+    if (reversed && marked) (*marked)[f] = 1;
   }
   return folded;
 }
@@ -155,43 +158,36 @@ public:
   explicit FoldCheck(const vcg_ext::PatchMesh& patch) : patch_(patch) {}
   bool Broken(const std::vector<Eigen::Vector3d>& moved) {
     if (Folded(patch_.points, moved, patch_) > 0) return true;
-    if (crossings_before_ < 0)
-      crossings_before_ =
-          vcg_ext::CountSelfIntersections(patch_.points, patch_.triangles, patch_.is_fill);
     return vcg_ext::CountSelfIntersections(moved, patch_.triangles, patch_.is_fill) >
-           crossings_before_;
+           int(CrossingsBefore().size());
   }
   /// Marks in `bad` (one flag per patch triangle) the fill triangles that `moved` turned over
   /// and those of the crossings it made that the coarse fill did not have; false if none.
   bool BrokenTriangles(const std::vector<Eigen::Vector3d>& moved, std::vector<char>* bad) {
     bad->assign(patch_.triangles.size(), 0);
-    bool broken = false;
-    for (size_t f = 0; f < patch_.triangles.size(); ++f) {
-      if (!patch_.is_fill[f]) continue;
-      const auto& t = patch_.triangles[f];
-      const Eigen::Vector3d a =
-          vcg_ext::TriangleNormal(patch_.points[t[0]], patch_.points[t[1]], patch_.points[t[2]]);
-      const Eigen::Vector3d b = vcg_ext::TriangleNormal(moved[t[0]], moved[t[1]], moved[t[2]]);
-      if (a.dot(b) <= 0) (*bad)[f] = 1, broken = true;
-    }
-    if (!have_pairs_before_) {
-      vcg_ext::CountSelfIntersections(patch_.points, patch_.triangles, patch_.is_fill,
-                                      &pairs_before_);
-      have_pairs_before_ = true;
-    }
+    bool broken = Folded(patch_.points, moved, patch_, bad) > 0;
     std::vector<std::pair<int, int>> pairs;
     vcg_ext::CountSelfIntersections(moved, patch_.triangles, patch_.is_fill, &pairs);
+    const std::vector<std::pair<int, int>>& before = CrossingsBefore();
     for (const auto& p : pairs)
-      if (!std::binary_search(pairs_before_.begin(), pairs_before_.end(), p))
+      if (!std::binary_search(before.begin(), before.end(), p))
         (*bad)[size_t(p.first)] = (*bad)[size_t(p.second)] = 1, broken = true;
     return broken;
   }
 
 private:
+  /// The coarse fill's own crossings (pairs of triangles), found once, when first asked for.
+  const std::vector<std::pair<int, int>>& CrossingsBefore() {
+    if (!have_crossings_before_)
+      vcg_ext::CountSelfIntersections(patch_.points, patch_.triangles, patch_.is_fill,
+                                      &crossings_before_);
+    have_crossings_before_ = true;
+    return crossings_before_;
+  }
+
   const vcg_ext::PatchMesh& patch_;
-  int crossings_before_ = -1;
-  bool have_pairs_before_ = false;
-  std::vector<std::pair<int, int>> pairs_before_;
+  bool have_crossings_before_ = false;
+  std::vector<std::pair<int, int>> crossings_before_;
 };
 
 /// Backs `moved` (the patch with its fill moved) off towards the coarse fill, halving the way,
