@@ -6,6 +6,7 @@
 #include "pipeline.h"
 
 #include <vcg_ext/curvature_colormap.h>
+#include <vcg_ext/fill_extent.h>
 #include <vcg_ext/hole_fairing.h>
 #include <vcg_ext/parallel_for.h>
 #include <vcg_ext/self_intersections.h>
@@ -419,6 +420,18 @@ std::vector<std::array<int, 3>> FillTriangles(const vcg_ext::PatchMesh& patch) {
   return tris;
 }
 
+/// How curved the known surface around a patch's fill is for its size: the spread of the known
+/// vertices' mean curvature times the fill's radius (both in the patch's units).
+double RingCurvature(const HoleImage& h) {
+  Eigen::Vector3d centre;
+  double radius = 0;
+  if (!vcg_ext::FillExtent(h.patch.points, h.is_new, &centre, &radius)) return 0;
+  std::vector<double> known;
+  for (size_t i = 0; i < h.curvature.size(); ++i)
+    if (!h.is_new[i]) known.push_back(h.curvature[i]);
+  return Spread(known) * radius;
+}
+
 /// Fake-hole validation of hole `hi` (embedded backend): every candidate (the coarse fill, the
 /// embedded inpainter at each detail amplitude, the exemplar if asked for, with `continued` the
 /// tri-Laplacian fill, with `symmetric` the mirror image's curvature and surface, with
@@ -597,6 +610,26 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
     auto natural = [&](size_t c) { return detail[c] >= 0.7 && detail[c] <= 1.3; };
     for (size_t c : tied)
       if (natural(c) && (!natural(choice) || error[c] < error[choice])) choice = c;
+  }
+  // Fake holes cut where the surface curves far more than around the hole (a near-flat spot
+  // among a machined part's fillets) reward a prior for bending the fill as they bend; the
+  // hole's own flat surroundings ask for the smooth cap.
+  std::vector<double> fake_ring;
+  for (const Trial& t : trials) fake_ring.push_back(RingCurvature(*t.hole));
+  std::nth_element(fake_ring.begin(), fake_ring.begin() + std::ptrdiff_t(fake_ring.size() / 2),
+                   fake_ring.end());
+  const double own_ring = RingCurvature(hi), fakes_ring = fake_ring[fake_ring.size() / 2];
+  if (vp.coarse && vp.max_flatter > 0 && fakes_ring > vp.max_flatter * own_ring) {
+    choice = 0;
+    std::ostringstream note;
+    note.precision(3);
+    if (own_ring > 0)
+      note << "the surface around it is " << fakes_ring / own_ring
+           << " times flatter than around its fake holes";
+    else
+      note << "the surface around it is flat, unlike around its fake holes";
+    note << ": they do not show how it fills, so it keeps the smooth coarse fill";
+    why = why.empty() ? note.str() : why + "; " + note.str();
   }
   hv.validation_errors = error;
   hv.validation_detail = detail;
@@ -967,6 +1000,8 @@ void CheckHoleFillParams(const HoleFillParams& p) {
   RequireRange(p.paper.max_iterations, 1, 100000, "the deformation steps");
   RequireRange(p.validation.fake_holes, 0, 16, "the fake holes per hole");
   RequireRange(p.validation.image_size, 16, 8192, "the fake holes' image size");
+  RequireRange(p.validation.max_flatter, 0, 1e6,
+               "how much flatter a hole may be than its fake holes");
   for (double a : p.validation.details) RequireRange(a, 0, 10, "a validated detail amplitude");
   RequireRange(p.symmetry.detection.tolerance, 1e-6, 1, "the symmetry tolerance");
   RequireRange(p.symmetry.detection.min_coverage, 0, 1, "the symmetry's minimum coverage");

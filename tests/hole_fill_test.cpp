@@ -493,6 +493,56 @@ TEST(FakeHoles, TheValidatedChoiceIsTheSameForAnyThreadCount) {
   for (size_t i = 0; i < results[0].size(); ++i) ASSERT_EQ(results[0][i], results[1][i]) << i;
 }
 
+/// A unit sphere covered with bumps everywhere but around (1, 0, 0): a smooth spot among
+/// curved surroundings, like a flat stretch between a machined part's fillets.
+void MakeSphereBumpyAroundASmoothSpot(CMeshO& m) {
+  vcg::tri::Sphere(m, 5);
+  const Eigen::Vector3d spot(1, 0, 0);
+  std::vector<Eigen::Vector3d> bumps;
+  const int count = 200; // a Fibonacci sphere's directions
+  for (int i = 0; i < count; ++i) {
+    const double z = 1 - (2 * i + 1.0) / count, ring = std::sqrt(1 - z * z);
+    const double angle = i * M_PI * (3 - std::sqrt(5.0));
+    const Eigen::Vector3d d(ring * std::cos(angle), ring * std::sin(angle), z);
+    if (std::acos(d.dot(spot)) > 0.65) bumps.push_back(d);
+  }
+  for (auto& v : m.vert) {
+    const Eigen::Vector3d p = Eigen::Vector3d(v.P()[0], v.P()[1], v.P()[2]).normalized();
+    double r = 1;
+    for (const auto& d : bumps) r += 0.02 * std::exp(-(p - d).squaredNorm() / (0.12 * 0.12));
+    v.P() = Point3m(Scalarm(r * p.x()), Scalarm(r * p.y()), Scalarm(r * p.z()));
+  }
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+  vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
+}
+
+// The fake holes near a hole in a smooth spot all land on bumps: what validates there (a fill
+// that bends as the bumps bend) says nothing of the spot, which keeps its smooth fill.
+TEST(FakeHoles, AHoleFarFlatterAroundThanItsFakeHolesKeepsTheSmoothFill) {
+  CMeshO truth;
+  MakeSphereBumpyAroundASmoothSpot(truth);
+  for (double max_flatter : {8.0, 0.0}) {
+    CMeshO m;
+    curvature_inpaint::CopyMesh(truth, m);
+    vcg_ext::PunchHole(m, Point3m(1, 0, 0), Scalarm(0.2));
+    vcg::tri::UpdateBounding<CMeshO>::Box(m);
+    HoleFillParams p = SmallImages();
+    p.validation.max_flatter = max_flatter;
+    const auto result = FillHoles(m, p);
+    ASSERT_EQ(result.holes.size(), 1u);
+    const auto& r = result.holes[0];
+    ASSERT_GT(r.fake_holes, 0) << r.validation_note;
+    const bool kept = r.validation_note.find("times flatter") != std::string::npos;
+    if (max_flatter > 0) {
+      EXPECT_TRUE(kept) << r.validation_note;
+      EXPECT_EQ(r.candidates[size_t(r.choice)], "coarse");
+      EXPECT_EQ(r.pick, 0) << "the coarse fill, not a variation";
+    } else {
+      EXPECT_FALSE(kept) << r.validation_note;
+    }
+  }
+}
+
 /// The symmetric egg in `m` with a hole over its first bump; returns its vertex count (the
 /// fill's vertices come after).
 size_t EggHoledOverItsFirstBump(CMeshO& m) {
@@ -651,6 +701,23 @@ curvature_inpaint::HoleFillResult FillWithoutSymmetry(CMeshO& m,
   return FillHoles(m, p);
 }
 
+/// The distance of each vertex of `m` from `first` on (a fill's) to the surface of `truth`,
+/// over `unit`.
+std::vector<double> FillErrors(const CMeshO& truth, const CMeshO& m, size_t first, double unit) {
+  std::vector<double> errors;
+  for (size_t v = first; v < m.vert.size(); ++v) {
+    const Eigen::Vector3d q(m.vert[v].cP()[0], m.vert[v].cP()[1], m.vert[v].cP()[2]);
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const auto& f : truth.face) {
+      Eigen::Vector3d c[3];
+      for (int k = 0; k < 3; ++k) c[k] = Eigen::Vector3d(f.cP(k)[0], f.cP(k)[1], f.cP(k)[2]);
+      nearest = std::min(nearest, DistanceToTriangle(q, c[0], c[1], c[2]));
+    }
+    errors.push_back(nearest / unit);
+  }
+  return errors;
+}
+
 /// The distance of each fill vertex to the fandisk when a hole of 5 % of its diagonal around
 /// `seed_vertex` is filled with the crease prior's variation, in diagonals.
 std::vector<double> FandiskCreaseFillErrors(int seed_vertex) {
@@ -672,18 +739,7 @@ std::vector<double> FandiskCreaseFillErrors(int seed_vertex) {
     ADD_FAILURE() << "no crease fill: " << (result.holes.empty() ? "" : result.holes[0].problem);
     return {};
   }
-  std::vector<double> errors;
-  for (size_t v = scan_vertices; v < m.vert.size(); ++v) {
-    const Eigen::Vector3d q(m.vert[v].cP()[0], m.vert[v].cP()[1], m.vert[v].cP()[2]);
-    double nearest = std::numeric_limits<double>::infinity();
-    for (const auto& f : truth.face) {
-      Eigen::Vector3d c[3];
-      for (int k = 0; k < 3; ++k) c[k] = Eigen::Vector3d(f.cP(k)[0], f.cP(k)[1], f.cP(k)[2]);
-      nearest = std::min(nearest, DistanceToTriangle(q, c[0], c[1], c[2]));
-    }
-    errors.push_back(nearest / diagonal);
-  }
-  return errors;
+  return FillErrors(truth, m, scan_vertices, diagonal);
 }
 
 // Two holes in the fandisk (from draws of the benchmark's rule outside its table) where the
@@ -905,6 +961,42 @@ TEST(TriLaplacian, AHoleOnAnEllipsoidComesBackCloserThanTheThinPlate) {
       std::count(off.holes[0].candidates.begin(), off.holes[0].candidates.end(), "tri-laplacian"),
       0);
   EXPECT_EQ(std::count(off.holes[0].kinds.begin(), off.holes[0].kinds.end(), "tri-laplacian"), 0);
+}
+
+// rocker_arm_603 of the benchmark's tuning half: a near-flat stretch of the rocker arm among
+// its fillets. Its fake holes, cut on the fillets, rewarded the tri-Laplacian for bending the
+// fill, which bent the real hole's fill 8 times further from the part than CGAL's cap; the
+// smooth coarse fill, kept because the hole's surroundings are far flatter, is the closer one.
+TEST(FakeHoles, TheRockerArmsFlatStretchKeepsTheSmoothFillItsFakeHolesWouldBend) {
+  CMeshO truth;
+  curvature_inpaint::LoadMesh(std::string(CI_SHARED_MESHES) + "/rocker_arm.ply", truth);
+  vcg::tri::UpdateBounding<CMeshO>::Box(truth);
+  const double diagonal = truth.bbox.Diag();
+  double rms[2] = {0, 0};
+  for (int gated = 1; gated >= 0; --gated) {
+    CMeshO m;
+    curvature_inpaint::CopyMesh(truth, m);
+    vcg_ext::PunchHole(m, m.vert[2700].cP(), Scalarm(0.05 * diagonal));
+    vcg::tri::UpdateBounding<CMeshO>::Box(m);
+    const size_t scan_vertices = m.vert.size();
+    HoleFillParams p;
+    if (!gated) p.validation.max_flatter = 0;
+    const auto result = FillHoles(m, p);
+    ASSERT_EQ(result.holes.size(), 1u);
+    const auto& r = result.holes[0];
+    const std::string described =
+        curvature_inpaint::DescribeValidation(r.candidates, r.validation_errors, r.choice,
+                                              r.fake_holes, r.mirror_fake_holes, r.validation_note);
+    ASSERT_FALSE(r.candidates.empty()) << described;
+    const bool kept = r.validation_note.find("times flatter") != std::string::npos;
+    EXPECT_EQ(kept, bool(gated)) << described;
+    EXPECT_EQ(r.candidates[size_t(r.choice)], gated ? "coarse" : "tri-laplacian") << described;
+    double sum = 0;
+    const std::vector<double> errors = FillErrors(truth, m, scan_vertices, diagonal);
+    for (double e : errors) sum += e * e;
+    rms[gated] = std::sqrt(sum / double(std::max<size_t>(errors.size(), 1)));
+  }
+  EXPECT_LT(rms[1], 0.5 * rms[0]) << "kept smooth " << rms[1] << ", bent " << rms[0];
 }
 
 } // namespace
