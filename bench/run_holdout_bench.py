@@ -191,7 +191,7 @@ def print_report(rows, split, sweep, variants, oracle, plots):
         lines = []
         for r in rows:
             v = r["fill_report"][0].get("validation")
-            if not v:
+            if not v or "choice" not in v:  # no candidates: only a note why
                 continue
             by_truth = {"coarse": r["coarse"]["rms"]}
             by_truth.update({f"detail {a}": r[f"detail {a}"]["rms"] for a in sweep})

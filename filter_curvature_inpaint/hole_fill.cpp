@@ -1225,6 +1225,12 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
     planes(result.symmetry_partial);
     o << ", \"best_coverage\": " << result.symmetry_best.coverage << "},\n";
   }
+  // The notes are the pipeline's own sentences: no control characters, only quotes to escape.
+  auto quoted = [](std::string t) {
+    for (auto& c : t)
+      if (c == '"' || c == '\\') c = '\'';
+    return '"' + t + '"';
+  };
   o << "  \"holes\": [";
   for (size_t k = 0; k < result.holes.size(); ++k) {
     const auto& r = result.holes[k];
@@ -1249,7 +1255,11 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
           o << (c ? ", " : "") << r.fake_hole_errors[f][c];
         o << "]";
       }
-      o << "], \"choice\": \"" << r.candidates[size_t(r.choice)] << "\"}";
+      o << "], \"choice\": \"" << r.candidates[size_t(r.choice)] << "\"";
+      if (!r.validation_note.empty()) o << ", \"note\": " << quoted(r.validation_note);
+      o << "}";
+    } else if (!r.validation_note.empty()) {
+      o << ", \"validation\": {\"note\": " << quoted(r.validation_note) << "}";
     }
     o << ", \"pick\": " << r.pick;
     if (!r.kind.empty()) o << ", \"kind\": \"" << r.kind << "\"";
@@ -1261,11 +1271,6 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
       o << ", \"curvature_spread\": {\"truth\": " << r.truth_spread.truth
         << ", \"truth_image\": " << r.truth_spread.image << ", \"target\": " << r.target_spread
         << ", \"result\": " << r.result_spread << "}";
-    auto quoted = [](std::string t) {
-      for (auto& c : t)
-        if (c == '"' || c == '\\') c = '\'';
-      return '"' + t + '"';
-    };
     if (!r.symmetry_note.empty()) o << ", \"no_symmetry\": " << quoted(r.symmetry_note);
     if (!r.crease_note.empty()) o << ", \"no_creases\": " << quoted(r.crease_note);
     if (!r.problem.empty()) o << ", \"problem\": " << quoted(r.problem);

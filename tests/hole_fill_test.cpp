@@ -460,6 +460,9 @@ TEST(FakeHoles, ASmallClosedPartFallsBackToTheVariationScoreAndSaysSo) {
   EXPECT_TRUE(r.candidates.empty());
   EXPECT_NE(r.validation_note.find("no room"), std::string::npos) << r.validation_note;
   EXPECT_NE(r.validation_note.find("variation score"), std::string::npos) << r.validation_note;
+  // The report says so too, for those who read it instead of the log.
+  const std::string json = curvature_inpaint::HoleFillReportJson(result, p);
+  EXPECT_NE(json.find("\"validation\": {\"note\": \"no room"), std::string::npos) << json;
   EXPECT_TRUE(r.problem.empty()) << r.problem;
   EXPECT_GE(r.pick, 1);
   const auto census = curvature_inpaint::CountHoles(m);
