@@ -216,7 +216,7 @@ def print_report(rows, split, sweep, variants, oracle, plots):
               "without the priors (`no priors`)\n")
         print("| prior | chosen on | RMS ratio to no priors (each hole) | closer than without |")
         print("|---|---|---|---|")
-        for prior in ("exemplar", "symmetry", "symmetry surface", "creases", "tri-laplacian"):
+        for prior in ("exemplar", "symmetry", "symmetry surface", "creases", "face", "tri-laplacian"):
             chosen = [r for r in rows
                       if (r["fill_report"][0].get("validation") or {}).get("choice") == prior]
             gains = [ratio(r["fill"]["rms"], r["no priors"]["rms"]) for r in chosen]

@@ -385,6 +385,12 @@ vcg_ext::CreaseFill CreasedPatch(const HoleImage& hi, const HoleFillParams& para
   return f;
 }
 
+/// The crease prior's kind of variation: its faces meeting at creases, or where no crease runs
+/// into the hole, the one face around it extended.
+std::string CreaseKind(const vcg_ext::CreaseFill& f) {
+  return f.crease_edges > 0 ? "creases" : "face";
+}
+
 /// A patch with its fill vertices moved, or why there is none.
 struct PatchFill {
   std::vector<Eigen::Vector3d> points; ///< the whole patch, unit box
@@ -434,14 +440,15 @@ double RingCurvature(const HoleImage& h) {
 
 /// Fake-hole validation of hole `hi` (embedded backend): every candidate (the coarse fill, the
 /// embedded inpainter at each detail amplitude, the exemplar if asked for, with `continued` the
-/// tri-Laplacian fill, with `symmetric` the mirror image's curvature and surface, with
-/// `creased` the crease fill: each prior only where the hole itself has it) fills fake holes
+/// tri-Laplacian fill, with `symmetric` the mirror image's curvature and surface, with a
+/// `crease_kind` the crease fill: each prior only where the hole itself has it) fills fake holes
 /// of its size near it and is scored against the surface that was cut out; `hv` gets the
 /// candidates, their errors and the choice (-1 when there was no room for fake holes: the variation
 /// score then chooses alone).
 void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const InpaintParams& inpaint,
-                  const ValidationContext& ctx, bool continued, bool symmetric, bool creased,
-                  HoleVariations& hv) {
+                  const ValidationContext& ctx, bool continued, bool symmetric,
+                  const std::string& crease_kind, HoleVariations& hv) {
+  const bool creased = !crease_kind.empty();
   const ValidationParams& vp = params.validation;
   if (vp.coarse) hv.candidates.push_back("coarse");
   const size_t first_detail = hv.candidates.size();
@@ -458,7 +465,7 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
     hv.candidates.push_back("symmetry surface");
   }
   const size_t crease_candidate = hv.candidates.size();
-  if (creased) hv.candidates.push_back("creases");
+  if (creased) hv.candidates.push_back(crease_kind);
   FakeHoleParams fp;
   fp.count = vp.fake_holes;
   fp.seed = params.inpaint.seed;
@@ -682,12 +689,13 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& 
       crease = CreasedPatch(hi, params);
       hv.crease_note = crease.problem;
     }
-    const bool creased = params.creases && crease.problem.empty();
+    const std::string crease_kind =
+        params.creases && crease.problem.empty() ? CreaseKind(crease) : std::string();
     PatchFill faired;
     if (params.tri_laplacian) faired = TriLaplacianPatch(hi);
     const bool continued = params.tri_laplacian && faired.problem.empty();
     if (ctx.vf && ValidatesOnFakeHoles(params))
-      ValidateHole(hi, params, inpaint, ctx, continued, symmetric, creased, hv);
+      ValidateHole(hi, params, inpaint, ctx, continued, symmetric, crease_kind, hv);
     InpaintParams at_scale = inpaint;
     at_scale.detail = hv.detail;
     if (at_scale.detail_scale <= 0) at_scale.detail_scale = hv.detail_scale;
@@ -707,9 +715,9 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& 
       hv.kinds.push_back("symmetry surface");
       hv.surfaces.push_back(std::move(mirror.points));
     }
-    if (creased) {
+    if (!crease_kind.empty()) {
       hv.variations.push_back(SurfaceImage(hi, crease.points, params));
-      hv.kinds.push_back("creases");
+      hv.kinds.push_back(crease_kind);
       hv.surfaces.push_back(std::move(crease.points));
     }
   } else {

@@ -354,8 +354,9 @@ class DetailAndValidation(TempDirTest):
             # The tri-Laplacian fill on every hole; where the hole's mirror image is known
             # surface, the symmetry prior's two more; the exemplar only when asked for.
             self.assertEqual(names[5], "tri-laplacian")
-            self.assertIn(names[6:], [[], ["symmetry", "symmetry surface"], ["creases"],
-                                      ["symmetry", "symmetry surface", "creases"]])
+            self.assertIn(names[6:], [[], ["symmetry", "symmetry surface"], ["creases"], ["face"],
+                                      ["symmetry", "symmetry surface", "creases"],
+                                      ["symmetry", "symmetry surface", "face"]])
             self.assertEqual(h["kinds"][4:], names[5:])
             self.assertGreaterEqual(v["fake_holes"], 1)
             errors = {c["name"]: c["error"] for c in v["candidates"]}

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -54,4 +55,64 @@ TEST(CreaseFill, FacesWhoseExtensionsDoNotMeetGiveNoFill) {
       vcg_ext::FillAcrossCreases(p.points, p.triangles, p.is_fill, p.free, {});
   EXPECT_NE(fill.problem.find("do not meet"), std::string::npos) << fill.problem;
   for (const auto& q : fill.points) EXPECT_TRUE(q.allFinite());
+}
+
+// A hole in one curved face with no crease anywhere near (a grid on z = 0.3 x^2 + 0.1 y^2, its
+// middle a flat fill): asked for, the fill is that face extended, on the surface to rounding;
+// by default, and on a surface that is no quadric, there is none.
+TEST(CreaseFill, AFaceWithNoCreaseIsExtendedOnlyWhereAskedAndSmooth) {
+  auto make = [](double bumps) {
+    const int n = 21;
+    Patch p;
+    auto height = [bumps](double x, double y) {
+      return 0.3 * x * x + 0.1 * y * y + bumps * std::sin(9 * x) * std::sin(9 * y);
+    };
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const double x = -1 + 2.0 * i / (n - 1), y = -1 + 2.0 * j / (n - 1);
+        p.points.emplace_back(x, y, height(x, y));
+      }
+    for (int j = 0; j + 1 < n; ++j)
+      for (int i = 0; i + 1 < n; ++i) {
+        const int a = j * n + i, b = a + 1, c = a + n, d = c + 1;
+        for (const std::array<int, 3>& t : {std::array<int, 3>{a, b, d}, {a, d, c}}) {
+          const Eigen::Vector3d centre =
+              (p.points[size_t(t[0])] + p.points[size_t(t[1])] + p.points[size_t(t[2])]) / 3;
+          p.triangles.push_back(t);
+          p.is_fill.push_back(char(std::hypot(centre.x(), centre.y()) < 0.45));
+        }
+      }
+    // Free: the vertices of fill triangles only, flattened as a coarse fill might leave them.
+    p.free.assign(p.points.size(), 1);
+    for (size_t t = 0; t < p.triangles.size(); ++t)
+      if (!p.is_fill[t])
+        for (int v : p.triangles[t]) p.free[size_t(v)] = 0;
+    for (size_t v = 0; v < p.points.size(); ++v)
+      if (p.free[v]) p.points[v].z() = 0;
+    return std::make_pair(p, height);
+  };
+  vcg_ext::CreaseFillParams asked;
+  asked.face_without_crease = true;
+  const auto smooth = make(0);
+  const Patch& p = smooth.first;
+  const vcg_ext::CreaseFill by_default =
+      vcg_ext::FillAcrossCreases(p.points, p.triangles, p.is_fill, p.free, {});
+  EXPECT_EQ(by_default.problem, "no crease runs into it");
+  const vcg_ext::CreaseFill face =
+      vcg_ext::FillAcrossCreases(p.points, p.triangles, p.is_fill, p.free, asked);
+  ASSERT_TRUE(face.problem.empty()) << face.problem;
+  EXPECT_EQ(face.crease_edges, 0);
+  EXPECT_EQ(face.regions, 1);
+  int moved = 0;
+  for (size_t v = 0; v < p.points.size(); ++v) {
+    const Eigen::Vector3d& q = face.points[v];
+    EXPECT_NEAR(q.z(), smooth.second(q.x(), q.y()), 1e-9) << v;
+    moved += p.free[v] && q.z() > 1e-3;
+  }
+  EXPECT_GT(moved, 10);
+  const auto bumpy = make(0.02);
+  const vcg_ext::CreaseFill none = vcg_ext::FillAcrossCreases(
+      bumpy.first.points, bumpy.first.triangles, bumpy.first.is_fill, bumpy.first.free, asked);
+  EXPECT_NE(none.problem.find("not one smooth face"), std::string::npos) << none.problem;
+  EXPECT_TRUE(none.points.empty());
 }

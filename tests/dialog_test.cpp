@@ -219,17 +219,19 @@ private slots:
     const auto& hole = d.Holes()[0];
     QVERIFY2(hole.problem.empty(), hole.problem.c_str());
     QVERIFY2(hole.symmetry_note.empty(), hole.symmetry_note.c_str());
+    // The egg is smooth all round: the crease prior offers its one face extended too.
     QCOMPARE(hole.kinds,
              (std::vector<std::string>{"continuation", "continuation", "exemplar", "exemplar",
-                                       "tri-laplacian", "symmetry", "symmetry surface"}));
+                                       "tri-laplacian", "symmetry", "symmetry surface", "face"}));
     QCOMPARE(hole.kinds[size_t(hole.pick - 1)], std::string("continuation"));
     // Each item says its kind; clicking the mirrored surface chooses it.
     auto* list = Find<QListWidget>(d, "variations_1");
-    QCOMPARE(list->count(), 7);
+    QCOMPARE(list->count(), 8);
     QVERIFY(list->item(2)->text().contains("exemplar"));
     QVERIFY(list->item(4)->text().contains("tri-laplacian"));
     QVERIFY(list->item(5)->text().contains("symmetry"));
     QCOMPARE(list->item(6)->data(Qt::UserRole).toString(), QString("symmetry surface"));
+    QVERIFY(list->item(7)->text().contains("face"));
     QTest::mouseClick(list->viewport(), Qt::LeftButton, {},
                       list->visualItemRect(list->item(6)).center());
     QCOMPARE(d.Holes()[0].pick, 7);
@@ -244,6 +246,7 @@ private slots:
     Find<QCheckBox>(d, "symmetry")->setChecked(false);
     Find<QCheckBox>(d, "exemplar")->setChecked(false);
     Find<QCheckBox>(d, "triLaplacian")->setChecked(false);
+    Find<QCheckBox>(d, "creases")->setChecked(false);
     d.Inpaint();
     QTRY_VERIFY_WITH_TIMEOUT(!d.Busy(), 120000);
     QCOMPARE(d.Holes()[0].kinds, (std::vector<std::string>{"continuation", "continuation"}));

@@ -886,6 +886,37 @@ TEST(Creases, AHoleInOneFaceBesideAnEdgeGetsTheFaceExtended) {
     EXPECT_NEAR(std::hypot(m.vert[v].cP()[0], m.vert[v].cP()[1]), 1, 0.005) << v;
 }
 
+// A hole in the middle of a cylinder's side, no crease within its context: the crease prior
+// offers the one face around it extended ("face"), on the cylinder; without
+// `face_without_crease` it offers nothing, as before.
+TEST(Creases, AHoleInOneFaceWithNoCreaseNearGetsTheFaceExtended) {
+  for (bool face : {true, false}) {
+    SCOPED_TRACE(face);
+    CMeshO m;
+    MakeRevolved(m, 2.0, 40, 64, [](double) { return 1.0; });
+    vcg_ext::PunchHole(m, Point3m(1, 0, 1), Scalarm(0.25));
+    vcg::tri::UpdateBounding<CMeshO>::Box(m);
+    const size_t scan_vertices = m.vert.size();
+    HoleFillParams p = SmallImages();
+    p.symmetry.enabled = false;
+    p.pick_kind = "face";
+    p.crease_fill.face_without_crease = face;
+    const auto result = FillHoles(m, p);
+    ASSERT_EQ(result.holes.size(), 1u);
+    const auto& r = result.holes[0];
+    ASSERT_TRUE(r.problem.empty()) << r.problem;
+    if (!face) {
+      EXPECT_EQ(r.crease_note, "no crease runs into it");
+      EXPECT_NE(r.kind, "face");
+      continue;
+    }
+    EXPECT_EQ(r.kind, "face") << r.crease_note;
+    ASSERT_GT(m.vert.size(), scan_vertices);
+    for (size_t v = scan_vertices; v < m.vert.size(); ++v)
+      EXPECT_NEAR(std::hypot(m.vert[v].cP()[0], m.vert[v].cP()[1]), 1, 0.005) << v;
+  }
+}
+
 // A hole in one of a cube's faces, two grid cells from its edge: the coarse fill's flat cap is
 // the face itself; the continuation and the tri-Laplacian read the curvature of the edge
 // nearby and bent it off the face.

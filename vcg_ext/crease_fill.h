@@ -6,8 +6,9 @@
 // them meet onto it, and the fill vertices nearest a crease onto its line, so that fill edges
 // run along it. Where two regions' surfaces meet, the crease comes back straight and sharp as
 // the extension of both, even where the hole took all of it (a plate's corner edge); where
-// three meet, a corner. Where one face surrounds the hole and a crease passes beside it, the
-// fill is that face extended. A smooth cap (Liepa, CGAL, MeshLab) rounds them away.
+// three meet, a corner. Where one face surrounds the hole and a crease passes beside it (or,
+// when asked, no crease at all), the fill is that face extended. A smooth cap (Liepa, CGAL,
+// MeshLab) rounds them away.
 #pragma once
 
 #include "fill_extent.h"
@@ -36,12 +37,16 @@ struct CreaseFillParams {
   /// its neighbours' mean, then back onto the solid): they spread the vertices that the
   /// projection piles up on a crease's line. 0: none.
   int relax_rounds = 0;
+  /// Where no crease runs into the hole, the one smooth face all around it, if it is one,
+  /// extended across it (a hole in a machined part's curved face, whose smooth fill follows the
+  /// curvature of the scan's facets, not the face's). False: such a hole has no fill.
+  bool face_without_crease = false;
 };
 
 struct CreaseFill {
-  std::vector<Eigen::Vector3d> points;     ///< the whole patch, fill vertices moved
-  int regions = 0;                         ///< smooth regions meeting at the hole
-  int crease_edges = 0;                    ///< sharp edges of the context
+  std::vector<Eigen::Vector3d> points; ///< the whole patch, fill vertices moved
+  int regions = 0;                     ///< smooth regions meeting at the hole
+  int crease_edges = 0; ///< sharp edges of the context; 0 where the fill is one face extended
   int convex_pairs = 0, concave_pairs = 0; ///< of faces that meet at a crease
   std::string problem;                     ///< why there is no fill; empty if there is one
 };
@@ -70,7 +75,8 @@ struct HeightField {
 
 /// The crease-carrying fill of a hole's patch (`points`, `triangles`, `is_fill` per triangle,
 /// `free` per vertex: the fill's vertices), oriented consistently; where one smooth region
-/// surrounds the hole, that region extended. A `problem` where the context has no crease, no
+/// surrounds the hole, that region extended. A `problem` where the context has no crease
+/// (unless `params.face_without_crease` and one smooth region surrounds the hole), no
 /// smooth region or only part of the hole's border in one, a region is not smooth enough to
 /// extend, no two of them meet at a crease (one beside the hole, or one inside it that shows
 /// in how the two faces lie), or their extensions do not meet within the hole's reach.
@@ -129,10 +135,17 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
       creases.push_back({t1, t2, side < 0 ? length : -length});
     }
   }
-  if (out.crease_edges == 0) {
+  if (out.crease_edges == 0 && !params.face_without_crease) {
     out.problem = "no crease runs into it";
     return out;
   }
+  // Without a crease only one face extended can fill it, so every other problem is that.
+  auto fail = [&](const char* problem) {
+    out.problem = out.crease_edges > 0 ? std::string(problem)
+                                       : "no crease runs into it, and the surface around it is "
+                                         "not one smooth face to extend";
+    return out;
+  };
 
   // Smooth regions of known faces; those with a face on the hole's border count.
   std::vector<char> on_border(points.size(), 0);
@@ -191,10 +204,8 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
     else
       hf.c << 0, 0, 0, c[0], c[1], c[2];
     const double residual = std::sqrt((a * c - z).squaredNorm() / double(verts.size()));
-    if (!(residual <= params.max_fit_residual * radius)) {
-      out.problem = "a face beside it is not smooth enough to extend";
-      return out;
-    }
+    if (!(residual <= params.max_fit_residual * radius))
+      return fail("a face beside it is not smooth enough to extend");
     fields.push_back(hf);
     region_vertices.push_back(std::move(verts));
   }
@@ -213,10 +224,8 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
       if (free[i]) out.points[i] -= fields[0].Offset(points[i]) * fields[0].n;
     return out;
   }
-  if (fields.size() < 2) {
-    out.problem = "fewer than two smooth faces meet at it";
-    return out;
-  }
+  if (fields.size() < 2 || out.crease_edges == 0)
+    return fail("fewer than two smooth faces meet at it");
   const double eps = 1e-9 * std::max(1.0, radius);
   // How each pair of faces meets: the sense of the crease edges between them (the longer).
   const size_t nr = fields.size();

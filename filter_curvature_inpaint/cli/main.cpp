@@ -38,7 +38,7 @@ const char* const kUsage =
     "      inpainting, deformation to the chosen variation) and write OUT. --pick auto (default)\n"
     "      takes the validated (or best-scored) variation; --pick KIND the first variation of\n"
     "      that kind where a hole has one (exemplar, symmetry, symmetry surface, creases,\n"
-    "      tri-laplacian).\n"
+    "      face, tri-laplacian).\n"
     "      Backends and their options as for inpaint.\n"
     "      --from-images DIR deforms to hole_<k>_inpainted.png, inpainted by hand in DIR\n"
     "      after `images IN DIR --size PX` (same --max-hole-edges, --context, --size).\n"
@@ -52,7 +52,9 @@ const char* const kUsage =
     "      embedded backend also offers N exemplar variations (patches of the known\n"
     "      curvature copied in, ridges first; validated like the rest).\n"
     "      A hole that creases run into also gets its context's faces extended across it\n"
-    "      until they meet (sharp edges and corners; validated); --no-creases leaves it out.\n"
+    "      until they meet (sharp edges and corners; validated), a hole inside one smooth\n"
+    "      face with no crease near, that face extended (\"face\"); --no-creases leaves\n"
+    "      both out.\n"
     "      Every hole also gets its fill faired to continue the curvature around it, not only\n"
     "      its tangents (a tri-Laplacian; validated); --no-tri-laplacian leaves it out.\n"
     "      --density D: the fill's vertex density (Liepa's alpha; default 2, coarse 1.41).\n"
@@ -322,7 +324,8 @@ curvature_inpaint::HoleFillParams ReadFillOptions(Args& args) {
   p.tri_laplacian = !args.Flag("--no-tri-laplacian");
   const std::string pick = args.Option("--pick", "auto");
   const std::vector<std::string> kinds{"continuation",     "exemplar", "symmetry",
-                                       "symmetry surface", "creases",  "tri-laplacian"};
+                                       "symmetry surface", "creases",  "face",
+                                       "tri-laplacian"};
   if (std::find(kinds.begin(), kinds.end(), pick) != kinds.end()) {
     p.pick_kind = pick;
   } else if (pick != "auto") {
@@ -330,7 +333,7 @@ curvature_inpaint::HoleFillParams ReadFillOptions(Args& args) {
     const long k = std::strtol(pick.c_str(), &end, 10);
     if (*end != '\0' || k < 1)
       throw UsageError("--pick needs auto, a variation number >= 1 or a kind (continuation, "
-                       "exemplar, symmetry, symmetry surface, creases, tri-laplacian)");
+                       "exemplar, symmetry, symmetry surface, creases, face, tri-laplacian)");
     p.pick = int(k);
   }
   p.mode = args.Option("--mode", p.mode);

@@ -159,8 +159,9 @@ HoleFillDialog::HoleFillDialog(const CMeshO& mesh, QWidget* parent)
   creases_->setObjectName("creases");
   creases_->setChecked(defaults.creases);
   creases_->setToolTip("A hole that sharp edges run into gets one more variation (\"creases\"): "
-                       "the smooth faces around it extended until they meet, chosen "
-                       "automatically where the fake holes validate it.");
+                       "the smooth faces around it extended until they meet; a hole inside "
+                       "one smooth face with no sharp edge near, that face extended "
+                       "(\"face\"). Chosen automatically where the fake holes validate it.");
   form->addRow("&Creases", creases_);
   tri_laplacian_ = new QCheckBox("Continue the curvature");
   tri_laplacian_->setObjectName("triLaplacian");

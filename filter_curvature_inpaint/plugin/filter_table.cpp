@@ -181,6 +181,7 @@ FilterSpec HoleFill() {
   p.push_back(Bool("Creases", d.creases, "Carry creases across holes",
                    "A hole that sharp edges run into gets one more variation: the smooth faces "
                    "around it extended until they meet, so edges and corners come back sharp; "
+                   "a hole inside one smooth face with no sharp edge near, that face extended; "
                    "used where the fake holes validate it."));
   p.push_back(Bool("TriLaplacian", d.tri_laplacian, "Continue the curvature",
                    "Each hole gets one more variation: its fill faired to continue the "
