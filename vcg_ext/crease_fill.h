@@ -38,8 +38,8 @@ struct CreaseFillParams {
   /// projection piles up on a crease's line. 0: none.
   int relax_rounds = 0;
   /// Where no crease runs into the hole, the one smooth face all around it, if it is one,
-  /// extended across it (a hole in a machined part's curved face, whose smooth fill follows the
-  /// curvature of the scan's facets, not the face's). False: such a hole has no fill.
+  /// extended across it (a hole inside a machined part's curved face). False: such a hole has
+  /// no fill.
   bool face_without_crease = false;
 };
 
