@@ -230,13 +230,17 @@ int Metrics(const std::string& gt_path, const std::string& input_path,
   PrintStats("gt_to_result", gt_to_result, diag);
   std::printf(", ");
   PrintStats("result_to_gt", result_to_gt, diag);
+  // A hole in a plane has no curvature to compare a fill's with: its detail ratio is null
+  // (not 0, which would count against every filler in a mean).
+  char detail[32] = "null";
+  if (spread_gt * diag > 1e-6)
+    std::snprintf(detail, sizeof detail, "%.3f", spread_fill / spread_gt);
   std::printf(", \"normal_deviation_deg\": %.3f, \"holes_left\": %zu, \"non_manifold_edges\": %zu, "
-              "\"filled_samples\": %zu, \"detail_ratio\": %.3f, \"crease_edges\": %d, "
+              "\"filled_samples\": %zu, \"detail_ratio\": %s, \"crease_edges\": %d, "
               "\"crease_angle_deg\": %.2f, \"crease_angle_error_deg\": %.2f}\n",
               normal_dev / std::max<size_t>(fill_region.points.size(), 1), census.loop_edges.size(),
-              census.non_manifold_edges, fill_region.points.size(),
-              spread_gt > 0 ? spread_fill / spread_gt : 0.0, creases.edges, creases.truth_deg,
-              creases.error_deg);
+              census.non_manifold_edges, fill_region.points.size(), detail, creases.edges,
+              creases.truth_deg, creases.error_deg);
   return 0;
 }
 

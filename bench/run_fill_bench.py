@@ -86,7 +86,8 @@ def main():
 
             def row(label, seconds, steps="-"):
                 m = metrics(gt, inp, out)
-                rows.append(f"| {name} | {label} | {dist(m)} | {m['detail_ratio']:.2f} | "
+                detail = "-" if m["detail_ratio"] is None else f"{m['detail_ratio']:.2f}"
+                rows.append(f"| {name} | {label} | {dist(m)} | {detail} | "
                             f"{m['normal_deviation_deg']:.1f} | {m['holes_left']} | {seconds:.2f} | {steps} |")
                 return m
 

@@ -88,6 +88,17 @@ def ratio(a, b):
     return a / b
 
 
+def detail_text(x):
+    """A detail ratio for a table: "-" where the truth has no curvature to compare with."""
+    return "-" if x is None else f"{x:.2f}"
+
+
+def mean_detail(rows, key):
+    """The mean detail ratio over the holes where it is defined (not those in a plane)."""
+    values = [r[key]["detail"] for r in rows if r[key]["detail"] is not None]
+    return statistics.mean(values) if values else float("nan")
+
+
 def timed(args):
     start = time.perf_counter()
     r = sh(args)
@@ -122,7 +133,7 @@ def plot_scatter(path, rows):
         for key in ("fill", "oracle", "cgal", "close"):
             f.write(f"# {key}\n")
             for r in rows:
-                if key in r:
+                if key in r and r[key]["detail"] is not None:
                     f.write(f"{ratio(r[key]['rms'], r['cgal']['rms']):.4f} {r[key]['detail']:.4f}\n")
             f.write("\n\n")
     script = "\n".join([
@@ -151,7 +162,7 @@ def summary(label, rows, key):
     ratios = [ratio(r[key]["rms"], r["cgal"]["rms"]) for r in rows]
     haus = [ratio(r[key]["hausdorff"], r["cgal"]["hausdorff"]) for r in rows]
     return (f"| {label} | {sum(x < 1 for x in ratios)} of {len(rows)} | {statistics.median(ratios):.3f} | "
-            f"{sum(x <= 1 for x in haus)} of {len(rows)} | {statistics.mean(r[key]['detail'] for r in rows):.2f} | "
+            f"{sum(x <= 1 for x in haus)} of {len(rows)} | {mean_detail(rows, key):.2f} | "
             f"{all(r[key]['watertight'] for r in rows)} | {all(r[key]['kept'] for r in rows)} | "
             f"{statistics.median(r[key]['seconds'] for r in rows):.2f} |")
 
@@ -169,8 +180,9 @@ def print_report(rows, split, sweep, variants, oracle, plots):
     for r in rows:
         c = r["cgal"]
         cells = [f"{ratio(r[k]['rms'], c['rms']):.2f} / {ratio(r[k]['hausdorff'], c['hausdorff']):.2f} / "
-                 f"{r[k]['detail']:.2f} / {r[k]['normal']:.1f}° / {r[k]['seconds']:.2f} s" for k in main_methods]
-        print(f"| {r['name']} | {r['edges']} | {c['rms']:.3f} / {c['hausdorff']:.2f}, {c['detail']:.2f}, "
+                 f"{detail_text(r[k]['detail'])} / {r[k]['normal']:.1f}° / {r[k]['seconds']:.2f} s"
+                 for k in main_methods]
+        print(f"| {r['name']} | {r['edges']} | {c['rms']:.3f} / {c['hausdorff']:.2f}, {detail_text(c['detail'])}, "
               f"{c['seconds']:.2f} s | " + " | ".join(cells) + " |")
     if extra:
         print(f"\nPer hole ({split} half), fixed settings: RMS ratio to CGAL's / detail ratio\n")
@@ -178,9 +190,9 @@ def print_report(rows, split, sweep, variants, oracle, plots):
         print("|" + "---|" * (1 + len(extra)))
         for r in rows:
             print(f"| {r['name']} | " + " | ".join(
-                f"{ratio(r[k]['rms'], r['cgal']['rms']):.2f} / {r[k]['detail']:.2f}" for k in extra) + " |")
+                f"{ratio(r[k]['rms'], r['cgal']['rms']):.2f} / {detail_text(r[k]['detail'])}" for k in extra) + " |")
     print("\nSummary: holes with lower RMS than CGAL, median RMS ratio, holes with Hausdorff ≤ CGAL's, "
-          "mean detail ratio, all watertight and manifold, every input vertex kept, median process s\n")
+          "mean detail ratio (over the holes whose truth is not flat), all watertight and manifold, every input vertex kept, median process s\n")
     print("| method | RMS < CGAL | median RMS ratio | Hausdorff ≤ CGAL | mean detail | watertight | kept | s |")
     print("|---|---|---|---|---|---|---|---|")
     for k in methods + ["cgal"]:
@@ -250,7 +262,7 @@ def print_report(rows, split, sweep, variants, oracle, plots):
             t = sp.get("truth") or 0
             if t > 0:
                 print(f"| {r['name']} | {sp['truth_image'] / t:.2f} | {sp['target'] / t:.2f} | "
-                      f"{sp['result'] / t:.2f} | {r['oracle']['detail']:.2f} |")
+                      f"{sp['result'] / t:.2f} | {detail_text(r['oracle']['detail'])} |")
     if plots:
         plot_bars(os.path.join(DOCS, "holdout_rms_ratio.png"), rows)
         plot_scatter(os.path.join(DOCS, "holdout_detail_vs_rms.png"), rows)

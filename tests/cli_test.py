@@ -389,6 +389,31 @@ class DetailAndValidation(TempDirTest):
         self.assertNotIn("validation 1:", log)
 
 
+class Oracle(TempDirTest):
+    """`fill --oracle`: the ground truth's own curvature image, on a finer fill."""
+
+    def test_the_oracle_fills_finer_unless_a_density_is_given(self):
+        src = self.punched("fandisk.ply", 1000, 0.04)
+        truth = os.path.join(SHARED_MESHES, "fandisk.ply")
+
+        def fill(*options):
+            out, report = self.path("out.ply"), self.path("report.json")
+            r = run([TOOL, "fill", src, out, "--report", report, *options])
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(info(out)["holes"], 0)
+            with open(report) as f:
+                return json.load(f)["holes"][0]
+
+        oracle = fill("--oracle", truth)
+        at_two = fill("--oracle", truth, "--density", "2")
+        inpainted = fill("--detail", "1")
+        self.assertEqual(at_two["new_vertices"], inpainted["new_vertices"])
+        self.assertGreater(oracle["new_vertices"], at_two["new_vertices"])
+        for h in (oracle, at_two):
+            self.assertGreater(h["curvature_spread"]["truth"], 0)
+            self.assertGreater(h["curvature_spread"]["result"], 0)
+
+
 class CurvatureImages(TempDirTest):
     def test_images_of_every_hole_and_a_montage(self):
         out = self.path("images")

@@ -63,7 +63,9 @@ const char* const kUsage =
     "      the image was painted, still lacks of the image's (a round that comes no closer\n"
     "      to the image, or folds the fill, is not taken).\n"
     "      --oracle GT (benchmarks): deform to the curvature image painted from GT, the mesh\n"
-    "      before its holes were cut: the best any inpainter can do with this deformation.\n"
+    "      before its holes were cut: the best any inpainter can do with this deformation\n"
+    "      (the fill at density 2.5 unless --density is given: a finer one, to carry\n"
+    "      the truth's detail).\n"
     "  curvature-inpaint coarse IN OUT [--max-hole-edges N] [--max-hole-diameter F]\n"
     "                   [--keep-longest-open] [--selected-only] [--liepa-max-edges M] [--threads "
     "T]\n"
@@ -354,9 +356,12 @@ curvature_inpaint::HoleFillParams ReadFillOptions(Args& args) {
 }
 
 int Fill(Args& args) {
+  const bool density_given = args.Has("--density");
   curvature_inpaint::HoleFillParams p = ReadFillOptions(args);
   const std::string report = args.Option("--report", "");
   const std::string oracle_path = args.Option("--oracle", "");
+  if (!oracle_path.empty() && !density_given)
+    p.images.coarse.density_alpha = curvature_inpaint::kOracleDensity;
   const auto files = args.Positional(2);
   CMeshO m;
   const int mask = curvature_inpaint::LoadMesh(files[0], m);
