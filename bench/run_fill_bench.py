@@ -22,6 +22,7 @@ import time
 
 from run_coarse_bench import (BIN, CLOSE_HOLES, SHARED, build, case_input, cases, cgal, dist, meshlab,
                               meshlab_prefix, metrics, sh, table)
+from run_holdout_bench import detail_text
 
 DOCS = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "docs")
 VARIATIONS = 4
@@ -86,8 +87,7 @@ def main():
 
             def row(label, seconds, steps="-"):
                 m = metrics(gt, inp, out)
-                detail = "-" if m["detail_ratio"] is None else f"{m['detail_ratio']:.2f}"
-                rows.append(f"| {name} | {label} | {dist(m)} | {detail} | "
+                rows.append(f"| {name} | {label} | {dist(m)} | {detail_text(m['detail_ratio'])} | "
                             f"{m['normal_deviation_deg']:.1f} | {m['holes_left']} | {seconds:.2f} | {steps} |")
                 return m
 
