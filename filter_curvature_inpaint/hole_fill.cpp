@@ -438,6 +438,236 @@ double RingCurvature(const HoleImage& h) {
   return Spread(known) * radius;
 }
 
+/// What a candidate of the fake-hole validation fills a hole with.
+enum class CandidateKind {
+  kCoarse,
+  kDetail,
+  kExemplar,
+  kTriLaplacian,
+  kSymmetry,
+  kSymmetrySurface,
+  kCreases
+};
+
+struct ValidationCandidate {
+  CandidateKind kind;
+  std::string name;     ///< as the report, the log and the dialog list it
+  double amplitude = 0; ///< kDetail: the embedded inpainter's detail amplitude
+  size_t detail = 0;    ///< kDetail: which of ValidationParams::details
+};
+
+/// A surface prior says nothing where a fake hole has no mirror image or no crease; there it
+/// stands for the best of the other candidates.
+bool IsSurfacePrior(CandidateKind k) {
+  return k == CandidateKind::kSymmetry || k == CandidateKind::kSymmetrySurface ||
+         k == CandidateKind::kCreases;
+}
+
+/// The candidates of a hole, in the order of the report: the coarse fill, the detail
+/// amplitudes, then the priors the hole itself has (`crease_kind` empty: none).
+std::vector<ValidationCandidate> ValidationCandidates(const HoleFillParams& params, bool continued,
+                                                      bool symmetric,
+                                                      const std::string& crease_kind) {
+  std::vector<ValidationCandidate> c;
+  const ValidationParams& vp = params.validation;
+  if (vp.coarse) c.push_back({CandidateKind::kCoarse, "coarse"});
+  for (size_t i = 0; i < vp.details.size(); ++i)
+    c.push_back({CandidateKind::kDetail,
+                 "detail " + QString::number(vp.details[i], 'g', 3).toStdString(), vp.details[i],
+                 i});
+  if (params.exemplar) c.push_back({CandidateKind::kExemplar, "exemplar"});
+  if (continued) c.push_back({CandidateKind::kTriLaplacian, "tri-laplacian"});
+  if (symmetric) {
+    c.push_back({CandidateKind::kSymmetry, "symmetry"});
+    c.push_back({CandidateKind::kSymmetrySurface, "symmetry surface"});
+  }
+  if (!crease_kind.empty()) c.push_back({CandidateKind::kCreases, crease_kind});
+  return c;
+}
+
+/// One fake hole of a hole's validation: its image and every candidate's fill of it.
+struct FakeHoleTrial {
+  const FakeHole* fake = nullptr;
+  CurvatureImagesResult images;
+  const HoleImage* hole = nullptr;
+  std::vector<std::vector<Eigen::Vector3d>> fills; ///< per candidate, the whole patch
+  std::vector<double> errors;                      ///< per candidate: RMS / the fake's radius
+  std::vector<char> applies; ///< per candidate: it has a fill of its own (a surface prior may not)
+};
+
+/// Fills fake hole `fake` with every candidate and scores each against the surface cut out.
+/// False where the fake hole could not be filled (it then does not count).
+bool TryFakeHole(const FakeHole& fake, const std::vector<ValidationCandidate>& candidates,
+                 const HoleFillParams& params, const InpaintParams& inpaint,
+                 const ValidationContext& ctx, FakeHoleTrial& t) {
+  const ValidationParams& vp = params.validation;
+  t.fake = &fake;
+  CMeshO local;
+  CopyMesh(fake.holed, local);
+  CurvatureImagesParams ip = params.images;
+  ip.coarse.keep_longest_open = true; // the piece's own border
+  ip.coarse.max_hole_edges = 0;
+  ip.coarse.max_hole_diameter = 0;
+  ip.coarse.selected_only = false;
+  ip.coarse.threads = 1; // holes already run in parallel
+  ip.color_vertices = false;
+  ip.image_size = std::min(ip.image_size, vp.image_size);
+  try {
+    t.images = ComputeCurvatureImages(local, ip);
+  } catch (const std::exception&) {
+    return false;
+  }
+  for (const auto& h : t.images.holes)
+    if (h.problem.empty()) t.hole = &h;
+  if (!t.hole) return false;
+  const HoleImage& f = *t.hole;
+  const auto fill = FillTriangles(f.patch);
+  // The fake holes are deformed in direct mode whatever the hole's: paper mode's hundreds of
+  // steps, twenty times over, would take a minute a hole. The choice is an amplitude.
+  HoleFillParams direct = params;
+  direct.mode = "direct";
+  InpaintParams one = inpaint;
+  one.detail_scale = FillSpacingPixels(f);
+  const std::vector<QImage> completed =
+      InpaintEmbeddedAmplitudes(ToQImage(f.image, false), MaskImage(f.image), one, vp.details);
+  auto has = [&](CandidateKind k) {
+    return std::any_of(candidates.begin(), candidates.end(),
+                       [k](const ValidationCandidate& c) { return c.kind == k; });
+  };
+  // The fake hole's mirror image, on the known surface without the fake hole's own (which the
+  // whole mesh still has), and its crease fill.
+  vcg_ext::MirroredFill mirror;
+  if (has(CandidateKind::kSymmetry))
+    mirror = MirroredPatch(*ctx.symmetry, f, t.images.coarse.box, params, fake.centre,
+                           1.25 * fake.radius / t.images.coarse.box.scale);
+  vcg_ext::CreaseFill crease;
+  if (has(CandidateKind::kCreases)) crease = CreasedPatch(f, params);
+  for (const ValidationCandidate& c : candidates) {
+    t.fills.push_back(f.patch.points);
+    auto& points = t.fills.back();
+    bool applies = !IsSurfacePrior(c.kind);
+    auto deform_to = [&](const QImage& image) {
+      PatchDeformation d = DeformPatch(f, image, direct);
+      if (d.result.solved) points = std::move(d.points);
+      return d.result.solved;
+    };
+    switch (c.kind) {
+    case CandidateKind::kCoarse:
+      break;
+    case CandidateKind::kDetail:
+      deform_to(completed.at(c.detail));
+      break;
+    case CandidateKind::kExemplar: {
+      const std::vector<QImage> copied =
+          InpaintExemplarVariations(ToQImage(f.image, false), MaskImage(f.image), one, 1);
+      if (!copied.empty()) deform_to(copied[0]);
+      break;
+    }
+    case CandidateKind::kTriLaplacian: {
+      PatchFill faired = TriLaplacianPatch(f);
+      if (faired.problem.empty()) points = std::move(faired.points);
+      break;
+    }
+    case CandidateKind::kSymmetry:
+      if (mirror.problem.empty()) applies = deform_to(SurfaceImage(f, mirror.points, params));
+      break;
+    case CandidateKind::kSymmetrySurface:
+      if (mirror.problem.empty()) points = mirror.points, applies = true;
+      break;
+    case CandidateKind::kCreases:
+      if (crease.problem.empty()) points = crease.points, applies = true;
+      break;
+    }
+    t.applies.push_back(applies);
+    t.errors.push_back(applies ? FakeHoleError(fake, points, fill) / fake.radius : 0.0);
+  }
+  return true;
+}
+
+/// Where a surface prior has no fill for a fake hole it stands for what the hole would get
+/// without the surface priors, the candidate with the lowest error over all fake holes among
+/// the others, so that it wins only where it applies and does better.
+void StandInForSurfacePriors(const std::vector<ValidationCandidate>& candidates,
+                             std::vector<FakeHoleTrial>& trials) {
+  const size_t n = candidates.size();
+  std::vector<double> sum(n, 0.0);
+  for (const FakeHoleTrial& t : trials)
+    for (size_t c = 0; c < n; ++c) sum[c] += t.errors[c];
+  size_t fallback = n;
+  for (size_t c = 0; c < n; ++c)
+    if (!IsSurfacePrior(candidates[c].kind) && (fallback == n || sum[c] < sum[fallback]))
+      fallback = c;
+  if (fallback == n) return;
+  for (FakeHoleTrial& t : trials)
+    for (size_t c = 0; c < n; ++c)
+      if (IsSurfacePrior(candidates[c].kind) && !t.applies[c])
+        t.errors[c] = t.errors[fallback], t.fills[c] = t.fills[fallback];
+}
+
+/// The candidate with the lowest mean error; among those within 2 % of it, one whose detail
+/// ratio on the fake holes lies in 0.7-1.3 (as much detail as the cut surface had), the
+/// closest of those. The ratios cost curvature fits, so they are measured only where they
+/// break a tie; `detail` gets them (-1 elsewhere).
+size_t ChooseCandidate(const std::vector<double>& error, const std::vector<FakeHoleTrial>& trials,
+                       const HoleFillParams& params, std::vector<double>& detail) {
+  const size_t n = error.size();
+  detail.assign(n, -1.0);
+  const size_t best = size_t(std::min_element(error.begin(), error.end()) - error.begin());
+  std::vector<size_t> tied;
+  for (size_t c = 0; c < n; ++c)
+    if (error[c] <= 1.02 * error[best]) tied.push_back(c);
+  if (tied.size() < 2) return best;
+  const double used = double(trials.size());
+  for (size_t c : tied) detail[c] = 0;
+  for (const FakeHoleTrial& t : trials) {
+    const FakeHole& fake = *t.fake;
+    std::vector<Eigen::Vector3d> support, normals;
+    ApssNeighbourhood(fake.truth, vcg_ext::VertexFaces(fake.truth), t.images.coarse.box,
+                      fake.cut_vertices, params.images.apss_rings, support, normals);
+    std::vector<int> query(fake.cut_vertices.size());
+    for (size_t i = 0; i < query.size(); ++i) query[i] = int(i);
+    const double truth =
+        Spread(vcg_ext::ApssMeanCurvature(support, normals, query, params.images.apss));
+    for (size_t c : tied) {
+      const std::vector<double> h =
+          PatchCurvature(t.fills[c], t.hole->patch.triangles, params.images.apss);
+      std::vector<double> free_h;
+      for (size_t i = 0; i < h.size(); ++i)
+        if (t.hole->is_new[i]) free_h.push_back(h[i]);
+      detail[c] += truth > 0 ? Spread(free_h) / truth / used : 0.0;
+    }
+  }
+  auto natural = [&](size_t c) { return detail[c] >= 0.7 && detail[c] <= 1.3; };
+  size_t choice = best;
+  for (size_t c : tied)
+    if (natural(c) && (!natural(choice) || error[c] < error[choice])) choice = c;
+  return choice;
+}
+
+/// Fake holes cut where the surface curves far more than around the hole (a near-flat spot
+/// among a machined part's fillets) reward a prior for bending the fill as they bend; the
+/// hole's own flat surroundings ask for the smooth cap. Whether the hole's ring is more than
+/// `max_flatter` times flatter than its fake holes' (median), and the note that says so.
+bool FlatterThanFakeHoles(const HoleImage& hi, const std::vector<FakeHoleTrial>& trials,
+                          double max_flatter, std::string& note) {
+  std::vector<double> fake_ring;
+  for (const FakeHoleTrial& t : trials) fake_ring.push_back(RingCurvature(*t.hole));
+  std::nth_element(fake_ring.begin(), fake_ring.begin() + std::ptrdiff_t(fake_ring.size() / 2),
+                   fake_ring.end());
+  const double own_ring = RingCurvature(hi), fakes_ring = fake_ring[fake_ring.size() / 2];
+  if (!(max_flatter > 0 && fakes_ring > max_flatter * own_ring)) return false;
+  std::ostringstream out;
+  out.precision(3);
+  if (own_ring > 0)
+    out << "the surface around it is " << fakes_ring / own_ring
+        << " times flatter than around its fake holes";
+  else
+    out << "the surface around it is flat, unlike around its fake holes";
+  out << ": they do not show how it fills, so it keeps the smooth coarse fill";
+  note = out.str();
+  return true;
+}
+
 /// Fake-hole validation of hole `hi` (embedded backend): every candidate (the coarse fill, the
 /// embedded inpainter at each detail amplitude, the exemplar if asked for, with `continued` the
 /// tri-Laplacian fill, with `symmetric` the mirror image's curvature and surface, with a
@@ -448,24 +678,10 @@ double RingCurvature(const HoleImage& h) {
 void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const InpaintParams& inpaint,
                   const ValidationContext& ctx, bool continued, bool symmetric,
                   const std::string& crease_kind, HoleVariations& hv) {
-  const bool creased = !crease_kind.empty();
   const ValidationParams& vp = params.validation;
-  if (vp.coarse) hv.candidates.push_back("coarse");
-  const size_t first_detail = hv.candidates.size();
-  for (double a : vp.details)
-    hv.candidates.push_back("detail " + QString::number(a, 'g', 3).toStdString());
-  const size_t first_prior = hv.candidates.size();
-  const bool exemplar = params.exemplar;
-  if (exemplar) hv.candidates.push_back("exemplar");
-  const size_t tri_laplacian_candidate = hv.candidates.size();
-  if (continued) hv.candidates.push_back("tri-laplacian");
-  const size_t first_symmetry = hv.candidates.size();
-  if (symmetric) {
-    hv.candidates.push_back("symmetry");
-    hv.candidates.push_back("symmetry surface");
-  }
-  const size_t crease_candidate = hv.candidates.size();
-  if (creased) hv.candidates.push_back(crease_kind);
+  const std::vector<ValidationCandidate> candidates =
+      ValidationCandidates(params, continued, symmetric, crease_kind);
+  for (const ValidationCandidate& c : candidates) hv.candidates.push_back(c.name);
   FakeHoleParams fp;
   fp.count = vp.fake_holes;
   fp.seed = params.inpaint.seed;
@@ -473,175 +689,40 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
   if (ctx.symmetry) fp.mirror_planes = MirrorPlanesInMeshUnits(*ctx.symmetry);
   std::string why;
   const auto fakes = CutFakeHoles(*ctx.mesh, *ctx.vf, *ctx.coarse, hi.hole, fp, &why);
-  const size_t n = hv.candidates.size();
-  // The fake holes are deformed in direct mode whatever the hole's: paper mode's hundreds of
-  // steps, twenty times over, would take a minute a hole. The choice is an amplitude.
-  HoleFillParams direct = params;
-  direct.mode = "direct";
-  // Per fake hole that could be filled: its image and every candidate's fill of it.
-  struct Trial {
-    const FakeHole* fake;
-    CurvatureImagesResult images;
-    const HoleImage* hole = nullptr;
-    std::vector<std::vector<Eigen::Vector3d>> fills; ///< per candidate, the whole patch
-    std::vector<double> errors;                      ///< per candidate
-    std::vector<char> applies;                       ///< per candidate: a surface prior's fill
-  };
-  std::vector<Trial> trials;
-  std::vector<double> error(n, 0.0), detail(n, -1.0);
-  for (const auto& fake_hole : fakes) {
+  // Reserved: a trial's `hole` points into its own `images`, which must not move.
+  std::vector<FakeHoleTrial> trials;
+  trials.reserve(fakes.size());
+  for (const auto& fake : fakes) {
     trials.emplace_back();
-    Trial& t = trials.back();
-    t.fake = fake_hole.get();
-    CMeshO local;
-    CopyMesh(fake_hole->holed, local);
-    CurvatureImagesParams ip = params.images;
-    ip.coarse.keep_longest_open = true; // the piece's own border
-    ip.coarse.max_hole_edges = 0;
-    ip.coarse.max_hole_diameter = 0;
-    ip.coarse.selected_only = false;
-    ip.coarse.threads = 1; // holes already run in parallel
-    ip.color_vertices = false;
-    ip.image_size = std::min(ip.image_size, vp.image_size);
-    try {
-      t.images = ComputeCurvatureImages(local, ip);
-    } catch (const std::exception&) {
-      trials.pop_back();
-      continue;
-    }
-    for (const auto& h : t.images.holes)
-      if (h.problem.empty()) t.hole = &h;
-    if (!t.hole) {
-      trials.pop_back();
-      continue;
-    }
-    const HoleImage& f = *t.hole;
-    const auto fill = FillTriangles(f.patch);
-    InpaintParams one = inpaint;
-    one.detail_scale = FillSpacingPixels(f);
-    const std::vector<QImage> completed =
-        InpaintEmbeddedAmplitudes(ToQImage(f.image, false), MaskImage(f.image), one, vp.details);
-    // The fake hole's mirror image, on the known surface without the fake hole's own (which
-    // the whole mesh still has), and its crease fill; where it has none, the prior stands for
-    // the best other candidate there (below).
-    vcg_ext::MirroredFill mirror;
-    if (symmetric)
-      mirror = MirroredPatch(*ctx.symmetry, f, t.images.coarse.box, params, t.fake->centre,
-                             1.25 * t.fake->radius / t.images.coarse.box.scale);
-    vcg_ext::CreaseFill crease;
-    if (creased) crease = CreasedPatch(f, params);
-    t.applies.assign(n, 1);
-    for (size_t c = 0; c < n; ++c) {
-      t.fills.push_back(f.patch.points);
-      if (c >= first_symmetry) t.applies[c] = 0;
-      if (c >= first_detail && c < first_prior) {
-        PatchDeformation d = DeformPatch(f, completed.at(c - first_detail), direct);
-        if (d.result.solved) t.fills.back() = std::move(d.points);
-      } else if (exemplar && c == first_prior) {
-        const std::vector<QImage> copied =
-            InpaintExemplarVariations(ToQImage(f.image, false), MaskImage(f.image), one, 1);
-        if (!copied.empty()) {
-          PatchDeformation d = DeformPatch(f, copied[0], direct);
-          if (d.result.solved) t.fills.back() = std::move(d.points);
-        }
-      } else if (continued && c == tri_laplacian_candidate) {
-        PatchFill faired = TriLaplacianPatch(f);
-        if (faired.problem.empty()) t.fills.back() = std::move(faired.points);
-      } else if (symmetric && c == first_symmetry && mirror.problem.empty()) {
-        PatchDeformation d = DeformPatch(f, SurfaceImage(f, mirror.points, params), direct);
-        if (d.result.solved) t.fills.back() = std::move(d.points), t.applies[c] = 1;
-      } else if (symmetric && c == first_symmetry + 1 && mirror.problem.empty()) {
-        t.fills.back() = mirror.points, t.applies[c] = 1;
-      } else if (creased && c == crease_candidate && crease.problem.empty()) {
-        t.fills.back() = crease.points, t.applies[c] = 1;
-      }
-      t.errors.push_back(
-          t.applies[c] ? FakeHoleError(*t.fake, t.fills.back(), fill) / t.fake->radius : 0.0);
-    }
+    if (!TryFakeHole(*fake, candidates, params, inpaint, ctx, trials.back())) trials.pop_back();
   }
-  // The surface priors (symmetry, creases) say nothing where a fake hole has no mirror image
-  // or no crease: there they stand for what the hole would get without them, the best of the
-  // other candidates, so that they win only where they apply and do better.
-  {
-    std::vector<double> base(first_symmetry, 0.0);
-    for (const Trial& t : trials)
-      for (size_t c = 0; c < first_symmetry; ++c) base[c] += t.errors[c];
-    const size_t fallback = size_t(std::min_element(base.begin(), base.end()) - base.begin());
-    for (Trial& t : trials)
-      for (size_t c = first_symmetry; c < n; ++c)
-        if (!t.applies[c]) t.errors[c] = t.errors[fallback], t.fills[c] = t.fills[fallback];
-    for (const Trial& t : trials)
-      for (size_t c = 0; c < n; ++c) error[c] += t.errors[c];
-  }
-  const int used = int(trials.size());
-  hv.fake_holes = used;
-  for (const Trial& t : trials) {
+  StandInForSurfacePriors(candidates, trials);
+  hv.fake_holes = int(trials.size());
+  for (const FakeHoleTrial& t : trials) {
     hv.mirror_fake_holes += t.fake->at_mirror_place;
     hv.fake_hole_errors.push_back(t.errors);
   }
-  if (used == 0) {
+  if (trials.empty()) {
     hv.candidates.clear();
     hv.validation_note = (why.empty() ? std::string("no fake hole near it could be filled") : why) +
                          "; the variation score chooses";
     return;
   }
-  for (double& e : error) e /= used;
-  const size_t best = size_t(std::min_element(error.begin(), error.end()) - error.begin());
-  std::vector<size_t> tied;
-  for (size_t c = 0; c < n; ++c)
-    if (error[c] <= 1.02 * error[best]) tied.push_back(c);
-  // Among candidates within 2 % of the lowest error, one whose detail ratio on the fake holes
-  // lies in 0.7-1.3 (as much detail as the cut surface had), the closest of those. The ratios
-  // cost curvature fits, so they are measured only where they break a tie (else -1).
-  size_t choice = best;
-  if (tied.size() > 1) {
-    for (size_t c : tied) detail[c] = 0;
-    for (const Trial& t : trials) {
-      const FakeHole& fake = *t.fake;
-      std::vector<Eigen::Vector3d> support, normals;
-      ApssNeighbourhood(fake.truth, vcg_ext::VertexFaces(fake.truth), t.images.coarse.box,
-                        fake.cut_vertices, params.images.apss_rings, support, normals);
-      std::vector<int> query(fake.cut_vertices.size());
-      for (size_t i = 0; i < query.size(); ++i) query[i] = int(i);
-      const double truth =
-          Spread(vcg_ext::ApssMeanCurvature(support, normals, query, params.images.apss));
-      for (size_t c : tied) {
-        const std::vector<double> h =
-            PatchCurvature(t.fills[c], t.hole->patch.triangles, params.images.apss);
-        std::vector<double> free_h;
-        for (size_t i = 0; i < h.size(); ++i)
-          if (t.hole->is_new[i]) free_h.push_back(h[i]);
-        detail[c] += truth > 0 ? Spread(free_h) / truth / used : 0.0;
-      }
-    }
-    auto natural = [&](size_t c) { return detail[c] >= 0.7 && detail[c] <= 1.3; };
-    for (size_t c : tied)
-      if (natural(c) && (!natural(choice) || error[c] < error[choice])) choice = c;
-  }
-  // Fake holes cut where the surface curves far more than around the hole (a near-flat spot
-  // among a machined part's fillets) reward a prior for bending the fill as they bend; the
-  // hole's own flat surroundings ask for the smooth cap.
-  std::vector<double> fake_ring;
-  for (const Trial& t : trials) fake_ring.push_back(RingCurvature(*t.hole));
-  std::nth_element(fake_ring.begin(), fake_ring.begin() + std::ptrdiff_t(fake_ring.size() / 2),
-                   fake_ring.end());
-  const double own_ring = RingCurvature(hi), fakes_ring = fake_ring[fake_ring.size() / 2];
-  if (vp.coarse && vp.max_flatter > 0 && fakes_ring > vp.max_flatter * own_ring) {
-    choice = 0;
-    std::ostringstream note;
-    note.precision(3);
-    if (own_ring > 0)
-      note << "the surface around it is " << fakes_ring / own_ring
-           << " times flatter than around its fake holes";
-    else
-      note << "the surface around it is flat, unlike around its fake holes";
-    note << ": they do not show how it fills, so it keeps the smooth coarse fill";
-    why = why.empty() ? note.str() : why + "; " + note.str();
+  std::vector<double> error(candidates.size(), 0.0);
+  for (const FakeHoleTrial& t : trials)
+    for (size_t c = 0; c < candidates.size(); ++c) error[c] += t.errors[c];
+  for (double& e : error) e /= double(trials.size());
+  std::vector<double> detail;
+  size_t choice = ChooseCandidate(error, trials, params, detail);
+  std::string flatter;
+  if (vp.coarse && FlatterThanFakeHoles(hi, trials, vp.max_flatter, flatter)) {
+    choice = 0; // the coarse fill
+    why = why.empty() ? flatter : why + "; " + flatter;
   }
   hv.validation_errors = error;
   hv.validation_detail = detail;
   hv.choice = int(choice);
-  if (choice >= first_detail && choice < first_prior) hv.detail = vp.details[choice - first_detail];
+  if (candidates[choice].kind == CandidateKind::kDetail) hv.detail = candidates[choice].amplitude;
   if (!why.empty()) hv.validation_note = why;
 }
 
