@@ -26,6 +26,7 @@
 #include <memory>
 #include <mutex>
 #include <sstream>
+#include <thread>
 
 namespace curvature_inpaint {
 
@@ -291,7 +292,13 @@ struct ValidationContext {
   const vcg_ext::CoarseFillResult* coarse = nullptr; ///< the holes' coarse fills (always given)
   const vcg_ext::VertexFaces* vf = nullptr;          ///< null where no hole is validated
   const SymmetryPrior* symmetry = nullptr;           ///< null where the prior is off
+  int threads = 1; ///< for one hole's fake holes: what the holes in parallel leave over
 };
+
+/// The threads a run has (`threads` as CoarseFillParams::threads: 0, one per core).
+int ThreadCount(int threads) {
+  return threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
+}
 
 /// The symmetry detection's parameters, on the run's threads.
 vcg_ext::SymmetryParams SymmetryDetection(const HoleFillParams& p) {
@@ -489,10 +496,11 @@ std::vector<ValidationCandidate> ValidationCandidates(const HoleFillParams& para
 struct FakeHoleTrial {
   const FakeHole* fake = nullptr;
   CurvatureImagesResult images;
-  const HoleImage* hole = nullptr;
+  int hole = -1;                                   ///< its hole in `images`
   std::vector<std::vector<Eigen::Vector3d>> fills; ///< per candidate, the whole patch
   std::vector<double> errors;                      ///< per candidate: RMS / the fake's radius
   std::vector<char> applies; ///< per candidate: it has a fill of its own (a surface prior may not)
+  const HoleImage& Hole() const { return images.holes[size_t(hole)]; }
 };
 
 /// Fills fake hole `fake` with every candidate and scores each against the surface cut out.
@@ -517,10 +525,10 @@ bool TryFakeHole(const FakeHole& fake, const std::vector<ValidationCandidate>& c
   } catch (const std::exception&) {
     return false;
   }
-  for (const auto& h : t.images.holes)
-    if (h.problem.empty()) t.hole = &h;
-  if (!t.hole) return false;
-  const HoleImage& f = *t.hole;
+  for (size_t h = 0; h < t.images.holes.size(); ++h)
+    if (t.images.holes[h].problem.empty()) t.hole = int(h);
+  if (t.hole < 0) return false;
+  const HoleImage& f = t.Hole();
   const auto fill = FillTriangles(f.patch);
   // The fake holes are deformed in direct mode whatever the hole's: paper mode's hundreds of
   // steps, twenty times over, would take a minute a hole. The choice is an amplitude.
@@ -528,6 +536,8 @@ bool TryFakeHole(const FakeHole& fake, const std::vector<ValidationCandidate>& c
   direct.mode = "direct";
   InpaintParams one = inpaint;
   one.detail_scale = FillSpacingPixels(f);
+  // Embedded only, and perhaps on another thread than the caller's: never MeshLab's callback.
+  one.http.cancelled = nullptr;
   const std::vector<QImage> completed =
       InpaintEmbeddedAmplitudes(ToQImage(f.image, false), MaskImage(f.image), one, vp.details);
   auto has = [&](CandidateKind k) {
@@ -630,10 +640,10 @@ size_t ChooseCandidate(const std::vector<double>& error, const std::vector<FakeH
         Spread(vcg_ext::ApssMeanCurvature(support, normals, query, params.images.apss));
     for (size_t c : tied) {
       const std::vector<double> h =
-          PatchCurvature(t.fills[c], t.hole->patch.triangles, params.images.apss);
+          PatchCurvature(t.fills[c], t.Hole().patch.triangles, params.images.apss);
       std::vector<double> free_h;
       for (size_t i = 0; i < h.size(); ++i)
-        if (t.hole->is_new[i]) free_h.push_back(h[i]);
+        if (t.Hole().is_new[i]) free_h.push_back(h[i]);
       detail[c] += truth > 0 ? Spread(free_h) / truth / used : 0.0;
     }
   }
@@ -651,7 +661,7 @@ size_t ChooseCandidate(const std::vector<double>& error, const std::vector<FakeH
 bool FlatterThanFakeHoles(const HoleImage& hi, const std::vector<FakeHoleTrial>& trials,
                           double max_flatter, std::string& note) {
   std::vector<double> fake_ring;
-  for (const FakeHoleTrial& t : trials) fake_ring.push_back(RingCurvature(*t.hole));
+  for (const FakeHoleTrial& t : trials) fake_ring.push_back(RingCurvature(t.Hole()));
   std::nth_element(fake_ring.begin(), fake_ring.begin() + std::ptrdiff_t(fake_ring.size() / 2),
                    fake_ring.end());
   const double own_ring = RingCurvature(hi), fakes_ring = fake_ring[fake_ring.size() / 2];
@@ -689,13 +699,20 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
   if (ctx.symmetry) fp.mirror_planes = MirrorPlanesInMeshUnits(*ctx.symmetry);
   std::string why;
   const auto fakes = CutFakeHoles(*ctx.mesh, *ctx.vf, *ctx.coarse, hi.hole, fp, &why);
-  // Reserved: a trial's `hole` points into its own `images`, which must not move.
+  // The fake holes are independent: on the threads the other holes leave over, each into its
+  // own slot, so the choice does not depend on how many there are.
+  std::vector<FakeHoleTrial> tried(fakes.size());
+  std::vector<char> filled(fakes.size(), 0);
+  vcg_ext::ParallelFor(
+      int(fakes.size()), ctx.threads,
+      [&](int i) {
+        filled[size_t(i)] =
+            TryFakeHole(*fakes[size_t(i)], candidates, params, inpaint, ctx, tried[size_t(i)]);
+      },
+      [](int, int) { return true; });
   std::vector<FakeHoleTrial> trials;
-  trials.reserve(fakes.size());
-  for (const auto& fake : fakes) {
-    trials.emplace_back();
-    if (!TryFakeHole(*fake, candidates, params, inpaint, ctx, trials.back())) trials.pop_back();
-  }
+  for (size_t i = 0; i < tried.size(); ++i)
+    if (filled[i]) trials.push_back(std::move(tried[i]));
   StandInForSurfacePriors(candidates, trials);
   hv.fake_holes = int(trials.size());
   for (const FakeHoleTrial& t : trials) {
@@ -999,7 +1016,9 @@ std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& 
   const std::unique_ptr<SymmetryPrior> symmetry =
       UsesSymmetry(params) ? DetectSymmetry(scratch, images.coarse, SymmetryDetection(params))
                            : nullptr;
-  const ValidationContext ctx{&scratch, &images.coarse, &vf, symmetry.get()};
+  // One hole at a time: its fake holes get every thread.
+  const ValidationContext ctx{&scratch, &images.coarse, &vf, symmetry.get(),
+                              ThreadCount(params.images.coarse.threads)};
   std::vector<HoleVariations> holes;
   for (size_t k = 0; k < images.holes.size(); ++k) {
     progress = int(100.0 * k / images.holes.size());
@@ -1153,7 +1172,12 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
         if (validates) vf = std::make_unique<vcg_ext::VertexFaces>(m);
         if (symmetric) symmetry = DetectSymmetry(m, coarse, SymmetryDetection(params));
       });
-      ctx = ValidationContext{&m, &coarse, vf.get(), symmetry.get()};
+      // The holes run in parallel; a hole's fake holes get the threads they leave over.
+      const auto holes = std::count_if(coarse.holes.begin(), coarse.holes.end(),
+                                       [](const auto& h) { return h.filled; });
+      ctx = ValidationContext{&m, &coarse, vf.get(), symmetry.get(),
+                              std::max(1, ThreadCount(params.images.coarse.threads) /
+                                              int(std::max<std::ptrdiff_t>(1, holes)))};
     }
     HoleVariations hv;
     QImage final_image;
