@@ -26,7 +26,6 @@
 #include <memory>
 #include <mutex>
 #include <sstream>
-#include <thread>
 
 namespace curvature_inpaint {
 
@@ -295,11 +294,6 @@ struct ValidationContext {
   int threads = 1; ///< for one hole's fake holes: what the holes in parallel leave over
 };
 
-/// The threads a run has (`threads` as CoarseFillParams::threads: 0, one per core).
-int ThreadCount(int threads) {
-  return threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
-}
-
 /// The symmetry detection's parameters, on the run's threads.
 vcg_ext::SymmetryParams SymmetryDetection(const HoleFillParams& p) {
   vcg_ext::SymmetryParams d = p.symmetry.detection;
@@ -517,7 +511,7 @@ bool TryFakeHole(const FakeHole& fake, const std::vector<ValidationCandidate>& c
   ip.coarse.max_hole_edges = 0;
   ip.coarse.max_hole_diameter = 0;
   ip.coarse.selected_only = false;
-  ip.coarse.threads = 1; // holes already run in parallel
+  ip.coarse.threads = 1; // the holes and their fake holes already run in parallel
   ip.color_vertices = false;
   ip.image_size = std::min(ip.image_size, vp.image_size);
   try {
@@ -1018,7 +1012,7 @@ std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& 
                            : nullptr;
   // One hole at a time: its fake holes get every thread.
   const ValidationContext ctx{&scratch, &images.coarse, &vf, symmetry.get(),
-                              ThreadCount(params.images.coarse.threads)};
+                              vcg_ext::ThreadCount(params.images.coarse.threads)};
   std::vector<HoleVariations> holes;
   for (size_t k = 0; k < images.holes.size(); ++k) {
     progress = int(100.0 * k / images.holes.size());
@@ -1176,7 +1170,7 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
       const auto holes = std::count_if(coarse.holes.begin(), coarse.holes.end(),
                                        [](const auto& h) { return h.filled; });
       ctx = ValidationContext{&m, &coarse, vf.get(), symmetry.get(),
-                              std::max(1, ThreadCount(params.images.coarse.threads) /
+                              std::max(1, vcg_ext::ThreadCount(params.images.coarse.threads) /
                                               int(std::max<std::ptrdiff_t>(1, holes)))};
     }
     HoleVariations hv;

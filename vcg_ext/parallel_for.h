@@ -13,14 +13,18 @@
 
 namespace vcg_ext {
 
+/// The threads `threads` asks for: itself, or one per core where it is 0 or less.
+inline int ThreadCount(int threads) {
+  return threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 /// Runs work(i) for i in [0, count) on `threads` threads (0: one per core), this thread
 /// included. After each task this thread runs, done(i, finished so far) is called on it;
 /// returning false stops the others picking new tasks and throws CancelledError. An exception
 /// from a task is rethrown here after every thread has stopped.
 template <class Work, class Done>
 void ParallelFor(int count, int threads, Work work, Done done) {
-  if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::max(1, std::min(threads, count));
+  threads = std::max(1, std::min(ThreadCount(threads), count));
   std::atomic<int> next{0}, finished{0};
   std::atomic<bool> stop{false};
   std::exception_ptr error;
