@@ -1146,6 +1146,7 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
   std::once_flag context_once;
   std::unique_ptr<vcg_ext::VertexFaces> vf;
   std::unique_ptr<SymmetryPrior> symmetry;
+  int fake_hole_threads = 1;
   auto fill_hole = [&](const vcg_ext::CoarseFillResult& coarse, int k, HoleImage& hi) {
     if (chosen && size_t(k) >= chosen->size())
       throw std::runtime_error("the previewed variations are for " +
@@ -1157,21 +1158,21 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
       w = &work[k];
     }
     // The validation reads the filled mesh around each hole, the symmetry prior its scan part:
-    // the vertex-face adjacency and the symmetry planes are found once, by the first hole that
-    // needs them (every coarse fill is in place by then).
+    // the vertex-face adjacency, the symmetry planes and the fake holes' threads are found once, by
+    // the first hole that needs them (every coarse fill is in place by then).
     ValidationContext ctx;
     ctx.coarse = &coarse;
     if (validates || symmetric) {
       std::call_once(context_once, [&] {
         if (validates) vf = std::make_unique<vcg_ext::VertexFaces>(m);
         if (symmetric) symmetry = DetectSymmetry(m, coarse, SymmetryDetection(params));
+        // The holes run in parallel; a hole's fake holes get the threads they leave over.
+        const auto holes = std::count_if(coarse.holes.begin(), coarse.holes.end(),
+                                         [](const auto& h) { return h.filled; });
+        fake_hole_threads = std::max(1, vcg_ext::ThreadCount(params.images.coarse.threads) /
+                                            int(std::max<std::ptrdiff_t>(1, holes)));
       });
-      // The holes run in parallel; a hole's fake holes get the threads they leave over.
-      const auto holes = std::count_if(coarse.holes.begin(), coarse.holes.end(),
-                                       [](const auto& h) { return h.filled; });
-      ctx = ValidationContext{&m, &coarse, vf.get(), symmetry.get(),
-                              std::max(1, vcg_ext::ThreadCount(params.images.coarse.threads) /
-                                              int(std::max<std::ptrdiff_t>(1, holes)))};
+      ctx = ValidationContext{&m, &coarse, vf.get(), symmetry.get(), fake_hole_threads};
     }
     HoleVariations hv;
     QImage final_image;
