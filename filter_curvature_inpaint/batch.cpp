@@ -3,6 +3,8 @@
 #include "mesh_io.h"
 #include "pipeline.h"
 
+#include <vcg_ext/parallel_for.h>
+
 #include <QCryptographicHash>
 #include <QDateTime>
 #include <QDir>
@@ -141,7 +143,7 @@ BatchSummary RunBatch(const std::vector<BatchScan>& all, const BatchParams& para
   std::FILE* results = std::fopen(results_path.c_str(), "a");
   if (!results) throw std::runtime_error("cannot write " + results_path);
 
-  const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+  const int cores = vcg_ext::ThreadCount(0);
   const int jobs = std::max(1, std::min(params.jobs, int(scans.size())));
   BatchSummary summary;
   summary.scans = int(scans.size());
