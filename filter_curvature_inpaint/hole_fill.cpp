@@ -20,12 +20,14 @@
 #include <QPainter>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <sstream>
+#include <thread>
 
 namespace curvature_inpaint {
 
@@ -839,14 +841,46 @@ std::unique_ptr<ServerPool> MakePool(const InpaintParams& p) {
   return std::make_unique<ServerPool>(p.urls, p.per_server);
 }
 
-/// The inpainting parameters with the callback as the network layer's cancel hook.
-InpaintParams WithCancel(const HoleFillParams& params, vcg::CallBackPos* cb, const int* progress) {
+/// Whether the user asked to stop, for requests on any thread. MeshLab's callback updates its
+/// GUI, so only the thread that made this may run it; requests on the others read what it last
+/// answered.
+struct CancelRequest {
+  std::thread::id asker = std::this_thread::get_id();
+  std::atomic<bool> requested{false};
+};
+
+/// The inpainting parameters with the callback as the network layer's cancel hook, asked on
+/// the calling thread only (`progress` is read there).
+InpaintParams WithCancel(const HoleFillParams& params, vcg::CallBackPos* cb, const int* progress,
+                         const std::shared_ptr<CancelRequest>& cancel) {
   InpaintParams inpaint = params.inpaint;
   if (cb)
-    inpaint.http.cancelled = [cb, progress] {
-      return !cb(*progress, "Curvature Inpaint: waiting for the inpainter");
+    inpaint.http.cancelled = [cb, progress, cancel] {
+      if (std::this_thread::get_id() == cancel->asker &&
+          !cb(*progress, "Curvature Inpaint: waiting for the inpainter"))
+        cancel->requested = true;
+      return cancel->requested.load();
     };
   return inpaint;
+}
+
+/// ParallelFor's report over holes: the callback with the holes done, on the calling thread;
+/// a stop it asks for also reaches the requests running on the other threads.
+auto HolesDone(vcg::CallBackPos* cb, int* progress, int count, const char* what,
+               const std::shared_ptr<CancelRequest>& cancel) {
+  return [=](int, int done) {
+    *progress = int(100.0 * done / std::max(count, 1));
+    const std::string msg = std::string("Curvature Inpaint: ") + what + " hole " +
+                            std::to_string(done) + " of " + std::to_string(count);
+    if (cb && !cb(*progress, msg.c_str())) cancel->requested = true;
+    return !cancel->requested;
+  };
+}
+
+/// The threads each hole's fake holes get where the holes themselves run in parallel on
+/// `threads`: those the holes leave over.
+int FakeHoleThreads(const vcg_ext::CoarseFillResult& coarse, int threads) {
+  return std::max(1, vcg_ext::ThreadCount(threads) / std::max(1, coarse.FilledCount()));
 }
 
 /// One row of the montage: coarse, mask, variations (the pick framed), final.
@@ -1003,24 +1037,33 @@ std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& 
   ip.color_vertices = false;
   const CurvatureImagesResult images = ComputeCurvatureImages(scratch, ip, cb);
   int progress = 0;
-  InpaintParams inpaint = WithCancel(params, cb, &progress);
+  const auto cancel = std::make_shared<CancelRequest>();
+  InpaintParams inpaint = WithCancel(params, cb, &progress, cancel);
   const std::unique_ptr<ServerPool> pool = MakePool(params.inpaint);
   inpaint.pool = pool.get();
   const vcg_ext::VertexFaces vf(scratch);
   const std::unique_ptr<SymmetryPrior> symmetry =
       UsesSymmetry(params) ? DetectSymmetry(scratch, images.coarse, SymmetryDetection(params))
                            : nullptr;
-  // One hole at a time: its fake holes get every thread.
+  // The holes in parallel as FillHoles runs them: embedded or from given images on every
+  // thread, each hole's fake holes on the threads the holes leave over; a service one request
+  // at a time (it would rate-limit parallel ones), a pool as many as it has room for. Each
+  // hole fills its own slot, so the preview does not depend on the thread count.
+  const bool local = !params.inpainted_dir.empty() || params.inpaint.backend == "embedded";
+  const int threads = params.images.coarse.threads;
   const ValidationContext ctx{&scratch, &images.coarse, &vf, symmetry.get(),
-                              vcg_ext::ThreadCount(params.images.coarse.threads)};
-  std::vector<HoleVariations> holes;
-  for (size_t k = 0; k < images.holes.size(); ++k) {
-    progress = int(100.0 * k / images.holes.size());
-    if (cb &&
-        !cb(progress, ("Curvature Inpaint: inpainting hole " + std::to_string(k + 1)).c_str()))
-      throw vcg_ext::CancelledError();
-    holes.push_back(InpaintHole(images.holes[k], k, params, inpaint, ctx));
-  }
+                              FakeHoleThreads(images.coarse, threads)};
+  const int count = int(images.holes.size());
+  if (cb && !cb(0, ("Curvature Inpaint: inpainting " + std::to_string(count) + " holes").c_str()))
+    throw vcg_ext::CancelledError();
+  std::vector<HoleVariations> holes(static_cast<size_t>(count));
+  const int at_once = local ? threads : pool ? pool->Capacity() : 1;
+  vcg_ext::ParallelFor(
+      count, at_once,
+      [&](int k) {
+        holes[size_t(k)] = InpaintHole(images.holes[size_t(k)], size_t(k), params, inpaint, ctx);
+      },
+      HolesDone(cb, &progress, count, "inpainted", cancel));
   return holes;
 }
 
@@ -1131,7 +1174,8 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
   const bool local =
       chosen || !params.inpainted_dir.empty() || params.inpaint.backend == "embedded";
   int progress = 0;
-  InpaintParams inpaint = WithCancel(params, local ? nullptr : cb, &progress);
+  const auto cancel = std::make_shared<CancelRequest>();
+  InpaintParams inpaint = WithCancel(params, local ? nullptr : cb, &progress, cancel);
   const std::unique_ptr<ServerPool> pool = MakePool(params.inpaint);
   inpaint.pool = pool.get();
   struct HoleWork {
@@ -1166,11 +1210,7 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
       std::call_once(context_once, [&] {
         if (validates) vf = std::make_unique<vcg_ext::VertexFaces>(m);
         if (symmetric) symmetry = DetectSymmetry(m, coarse, SymmetryDetection(params));
-        // The holes run in parallel; a hole's fake holes get the threads they leave over.
-        const auto holes = std::count_if(coarse.holes.begin(), coarse.holes.end(),
-                                         [](const auto& h) { return h.filled; });
-        fake_hole_threads = std::max(1, vcg_ext::ThreadCount(params.images.coarse.threads) /
-                                            int(std::max<std::ptrdiff_t>(1, holes)));
+        fake_hole_threads = FakeHoleThreads(coarse, params.images.coarse.threads);
       });
       ctx = ValidationContext{&m, &coarse, vf.get(), symmetry.get(), fake_hole_threads};
     }
@@ -1209,12 +1249,7 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
       vcg_ext::ParallelFor(
           count, pool ? pool->Capacity() : 1,
           [&](int k) { fill_hole(result.coarse, k, images.holes[k]); },
-          [&](int, int done) {
-            progress = int(100.0 * done / std::max(count, 1));
-            const std::string msg = "Curvature Inpaint: inpainted and deformed hole " +
-                                    std::to_string(done) + " of " + std::to_string(count);
-            return !cb || cb(progress, msg.c_str());
-          });
+          HolesDone(cb, &progress, count, "inpainted and deformed", cancel));
     }
     if (symmetry) {
       result.symmetry_detected = true;

@@ -15,10 +15,17 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <string>
+#include <thread>
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 namespace {
 
@@ -474,6 +481,7 @@ TEST(FakeHoles, TheValidatedChoiceIsTheSameForAnyThreadCount) {
   MakeBumpySphere(truth);
   std::vector<std::vector<Point3m>> results;
   std::vector<std::vector<std::string>> choices;
+  std::vector<std::vector<curvature_inpaint::HoleVariations>> previews;
   // 8 threads over the 3 holes leave each hole's fake holes 2 of their own.
   for (int threads : {1, 2, 8}) {
     CMeshO m;
@@ -483,21 +491,99 @@ TEST(FakeHoles, TheValidatedChoiceIsTheSameForAnyThreadCount) {
     vcg::tri::UpdateBounding<CMeshO>::Box(m);
     HoleFillParams p = SmallImages();
     p.images.coarse.threads = threads;
+    // The dialog's preview: its holes run in parallel too.
+    CMeshO scratch;
+    curvature_inpaint::CopyMesh(m, scratch);
+    previews.push_back(curvature_inpaint::InpaintHoles(scratch, p));
     const auto result = FillHoles(m, p);
     choices.emplace_back();
-    for (const auto& h : result.holes) {
+    ASSERT_EQ(previews.back().size(), result.holes.size());
+    for (size_t k = 0; k < result.holes.size(); ++k) {
+      const auto& h = result.holes[k];
       ASSERT_FALSE(h.candidates.empty()) << h.validation_note;
       choices.back().push_back(h.candidates[size_t(h.choice)]);
+      // The preview validates as the fill does.
+      EXPECT_EQ(previews.back()[k].candidates, h.candidates) << threads << " " << k;
+      EXPECT_EQ(previews.back()[k].validation_errors, h.validation_errors) << threads << " " << k;
+      EXPECT_EQ(previews.back()[k].choice, h.choice) << threads << " " << k;
     }
     results.emplace_back();
     for (const auto& v : m.vert) results.back().push_back(v.cP());
   }
   for (size_t run = 1; run < results.size(); ++run) {
     EXPECT_EQ(choices[0], choices[run]) << run;
+    for (size_t k = 0; k < previews[0].size(); ++k) {
+      EXPECT_EQ(previews[0][k].variations, previews[run][k].variations) << run << " " << k;
+      EXPECT_EQ(previews[0][k].pick, previews[run][k].pick) << run << " " << k;
+    }
     ASSERT_EQ(results[0].size(), results[run].size());
     for (size_t i = 0; i < results[0].size(); ++i)
       ASSERT_EQ(results[0][i], results[run][i]) << run << " " << i;
   }
+}
+
+/// A port on 127.0.0.1 whose connections are taken by the kernel and never answered: a
+/// service that hangs.
+class SilentServer {
+public:
+  SilentServer() {
+    fd_ = socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t len = sizeof a;
+    if (fd_ < 0 || bind(fd_, reinterpret_cast<sockaddr*>(&a), len) != 0 || listen(fd_, 8) != 0 ||
+        getsockname(fd_, reinterpret_cast<sockaddr*>(&a), &len) != 0)
+      throw std::runtime_error("no local port");
+    port_ = ntohs(a.sin_port);
+  }
+  ~SilentServer() { close(fd_); }
+  SilentServer(const SilentServer&) = delete;
+  SilentServer& operator=(const SilentServer&) = delete;
+  std::string Url() const { return "http://127.0.0.1:" + std::to_string(port_); }
+
+private:
+  int fd_ = -1;
+  int port_ = 0;
+};
+
+std::thread::id g_caller;
+std::atomic<int> g_callbacks{0}, g_callbacks_elsewhere{0};
+
+/// MeshLab's callback: counts where it runs, and asks to stop after a few calls.
+bool StopAfterAFewCalls(int, const char*) {
+  if (std::this_thread::get_id() != g_caller) ++g_callbacks_elsewhere;
+  return ++g_callbacks < 20;
+}
+
+TEST(Cancel, HolesOnSeveralServersStopTogetherAndTheCallbackRunsOnTheCallersThreadOnly) {
+  CMeshO m;
+  MakeBumpySphere(m);
+  for (const Point3m at : {Point3m(1.02f, 0, 0), Point3m(-1, 0.1f, 0)})
+    vcg_ext::PunchHole(m, at, Scalarm(0.12));
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+  std::vector<Point3m> before;
+  for (const auto& v : m.vert) before.push_back(v.cP());
+  SilentServer a, b;
+  HoleFillParams p = SmallImages();
+  p.inpaint.backend = "comfyui";
+  p.inpaint.urls = {a.Url(), b.Url()}; // both holes in flight at once, one on another thread
+  p.inpaint.http.max_retries = 0;
+  g_caller = std::this_thread::get_id();
+  for (bool preview : {false, true}) {
+    g_callbacks = 0;
+    g_callbacks_elsewhere = 0;
+    CMeshO scratch;
+    curvature_inpaint::CopyMesh(m, scratch);
+    if (preview)
+      EXPECT_ANY_THROW(curvature_inpaint::InpaintHoles(scratch, p, StopAfterAFewCalls));
+    else
+      EXPECT_ANY_THROW(FillHoles(m, p, StopAfterAFewCalls));
+    EXPECT_GE(g_callbacks, 20) << preview;
+    EXPECT_EQ(g_callbacks_elsewhere, 0) << preview;
+  }
+  ASSERT_EQ(m.vert.size(), before.size());
+  for (size_t i = 0; i < before.size(); ++i) ASSERT_EQ(m.vert[i].cP(), before[i]) << i;
 }
 
 /// A unit sphere covered with bumps everywhere but around (1, 0, 0): a smooth spot among
