@@ -177,13 +177,16 @@ int AutomaticPick(const HoleVariations& hole);
 /// deformed to its chosen variation, or keeps its coarse fill where the pick is 0. Throws
 /// InvalidMeshError, InvalidParameterError (before anything else), InpaintError (a backend
 /// failed), CancelledError or std::runtime_error
-/// (also when `chosen` does not match the holes), with `m` exactly as it was.
+/// (also when `chosen` does not match the holes), with `m` exactly as it was. `cb` (MeshLab's
+/// callback: progress, and a stop asked for) is called on this thread only.
 HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackPos* cb = nullptr,
                          const std::vector<HoleVariations>* chosen = nullptr);
 
 /// Stages 0-8 for a preview: fills the holes of `scratch` coarsely (pass a copy of the mesh;
 /// it is changed) and returns every hole's curvature image with its scored variations and the
-/// automatic pick (params.pick when given). Throws like FillHoles.
+/// automatic pick (params.pick when given). The holes run in parallel as FillHoles runs them
+/// (the same bytes for any thread count); `cb` is called on this thread only. Throws like
+/// FillHoles.
 std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& params,
                                          vcg::CallBackPos* cb = nullptr);
 
