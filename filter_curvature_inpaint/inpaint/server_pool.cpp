@@ -59,6 +59,11 @@ std::vector<QImage> ServerPool::Inpaint(const QImage& image, const QImage& mask,
       Release(server, true);
       return out;
     } catch (const InpaintError& e) {
+      // A stop the user asked for is no failure of the server: the next one is not tried.
+      if (params.http.cancelled && params.http.cancelled()) {
+        Release(server, true);
+        throw;
+      }
       Release(server, false);
       tried.insert(server);
       last = e.what();
