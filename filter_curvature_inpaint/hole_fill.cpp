@@ -835,6 +835,18 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& 
   return hv;
 }
 
+/// Whether the holes are inpainted here (the embedded backend, or images given in a folder)
+/// rather than by a service: they then run on every thread.
+bool InpaintsLocally(const HoleFillParams& params) {
+  return !params.inpainted_dir.empty() || params.inpaint.backend == "embedded";
+}
+
+/// How many holes a service is asked for at once: one at a time from a single service (which
+/// would rate-limit parallel requests), as many as a pool has room for.
+int RequestsAtOnce(const ServerPool* pool) {
+  return pool ? pool->Capacity() : 1;
+}
+
 /// The pool of a run's servers, where several are given for a service.
 std::unique_ptr<ServerPool> MakePool(const InpaintParams& p) {
   if (p.urls.empty() || p.backend == "embedded") return nullptr;
@@ -1045,11 +1057,9 @@ std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& 
   const std::unique_ptr<SymmetryPrior> symmetry =
       UsesSymmetry(params) ? DetectSymmetry(scratch, images.coarse, SymmetryDetection(params))
                            : nullptr;
-  // The holes in parallel as FillHoles runs them: embedded or from given images on every
-  // thread, each hole's fake holes on the threads the holes leave over; a service one request
-  // at a time (it would rate-limit parallel ones), a pool as many as it has room for. Each
-  // hole fills its own slot, so the preview does not depend on the thread count.
-  const bool local = !params.inpainted_dir.empty() || params.inpaint.backend == "embedded";
+  // The holes in parallel as FillHoles runs them, each hole's fake holes on the threads the
+  // holes leave over. Each hole fills its own slot, so the preview does not depend on the
+  // thread count.
   const int threads = params.images.coarse.threads;
   const ValidationContext ctx{&scratch, &images.coarse, &vf, symmetry.get(),
                               FakeHoleThreads(images.coarse, threads)};
@@ -1057,7 +1067,7 @@ std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& 
   if (cb && !cb(0, ("Curvature Inpaint: inpainting " + std::to_string(count) + " holes").c_str()))
     throw vcg_ext::CancelledError();
   std::vector<HoleVariations> holes(static_cast<size_t>(count));
-  const int at_once = local ? threads : pool ? pool->Capacity() : 1;
+  const int at_once = InpaintsLocally(params) ? threads : RequestsAtOnce(pool.get());
   vcg_ext::ParallelFor(
       count, at_once,
       [&](int k) {
@@ -1171,8 +1181,7 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
   // would outweigh the mesh. A service, which would rate-limit parallel calls, is
   // asked one hole at a time once every image is built. The mesh is only written afterwards,
   // on this thread.
-  const bool local =
-      chosen || !params.inpainted_dir.empty() || params.inpaint.backend == "embedded";
+  const bool local = chosen || InpaintsLocally(params);
   int progress = 0;
   const auto cancel = std::make_shared<CancelRequest>();
   InpaintParams inpaint = WithCancel(params, local ? nullptr : cb, &progress, cancel);
@@ -1244,10 +1253,8 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
                                ": preview again with the same settings");
     if (!local) {
       const int count = int(images.holes.size());
-      // One request at a time to a single service (which would rate-limit parallel ones), as
-      // many as a pool has room for.
       vcg_ext::ParallelFor(
-          count, pool ? pool->Capacity() : 1,
+          count, RequestsAtOnce(pool.get()),
           [&](int k) { fill_hole(result.coarse, k, images.holes[k]); },
           HolesDone(cb, &progress, count, "inpainted and deformed", cancel));
     }
