@@ -10,6 +10,7 @@
 #include <vcg/complex/algorithms/create/platonic.h>
 #include <vcg/simplex/face/distance.h>
 #include <vcg_ext/curvature_colormap.h>
+#include <vcg_ext/mesh_errors.h>
 #include <vcg_ext/punch_hole.h>
 
 #include <gtest/gtest.h>
@@ -575,18 +576,21 @@ TEST(Cancel, HolesOnSeveralServersStopTogetherAndTheCallbackRunsOnTheCallersThre
     g_callbacks_elsewhere = 0;
     CMeshO scratch;
     curvature_inpaint::CopyMesh(m, scratch);
+    // A stop is no failure of the servers: it comes out as the stop it is, and the pool does
+    // not move on to the next server ("every one of the 2 servers failed").
     std::string error;
+    bool stopped = false;
     try {
       if (preview)
         curvature_inpaint::InpaintHoles(scratch, p, StopAfterAFewCalls);
       else
         FillHoles(m, p, StopAfterAFewCalls);
+    } catch (const vcg_ext::CancelledError&) {
+      stopped = true;
     } catch (const std::exception& e) {
       error = e.what();
     }
-    // A stop is no failure of the servers: the pool does not move on to the next one.
-    EXPECT_NE(error.find("cancelled by the user"), std::string::npos) << error;
-    EXPECT_EQ(error.find("servers failed"), std::string::npos) << error;
+    EXPECT_TRUE(stopped) << preview << ": " << error;
     EXPECT_GE(g_callbacks, 20) << preview;
     EXPECT_EQ(g_callbacks_elsewhere, 0) << preview;
   }

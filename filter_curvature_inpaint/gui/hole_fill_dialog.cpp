@@ -401,7 +401,7 @@ void HoleFillDialog::RunWorker(std::function<void()> work, std::function<void()>
     try {
       work();
     } catch (const std::exception& e) {
-      // A stop surfaces as CancelledError, or from the network layer as an InpaintError.
+      // A stop surfaces as CancelledError; an error the stop caused on its way out reads the same.
       *error = *cancel ? QString("Stopped.") : QString::fromStdString(e.what());
     }
   });

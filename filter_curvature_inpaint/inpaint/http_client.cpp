@@ -1,5 +1,7 @@
 #include "http_client.h"
 
+#include <vcg_ext/mesh_errors.h>
+
 #include <curl/curl.h>
 
 #include <algorithm>
@@ -110,7 +112,7 @@ HttpResponse SendOnce(const HttpRequest& request, const HttpOptions& options) {
   if (t.over_cap || rc == CURLE_FILESIZE_EXCEEDED)
     throw HttpError("the response was larger than " +
                     std::to_string(options.max_response_bytes >> 20) + " MB and was refused");
-  if (rc == CURLE_ABORTED_BY_CALLBACK) throw HttpError("cancelled by the user");
+  if (rc == CURLE_ABORTED_BY_CALLBACK) throw vcg_ext::CancelledError();
   if (rc == CURLE_OPERATION_TIMEDOUT)
     throw HttpError("no complete answer within " + std::to_string(int(options.total_timeout_s)) +
                     " s");
@@ -150,7 +152,7 @@ HttpResponse SendWithRetries(const HttpRequest& request, const HttpOptions& opti
     backoff *= 2;
     const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(wait);
     while (std::chrono::steady_clock::now() < until) {
-      if (options.cancelled && options.cancelled()) throw HttpError("cancelled by the user");
+      if (options.cancelled && options.cancelled()) throw vcg_ext::CancelledError();
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
   }

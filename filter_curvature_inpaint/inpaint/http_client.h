@@ -39,22 +39,25 @@ struct HttpOptions {
   double total_timeout_s = 300; ///< per attempt
   size_t max_response_bytes = 64u << 20;
   int max_retries = 3;
-  double backoff_s = 1.0;          ///< first wait without retry-after; doubles each retry
-  double max_wait_s = 60;          ///< longest wait honoured from retry-after
-  std::function<bool()> cancelled; ///< polled during transfers and waits
+  double backoff_s = 1.0; ///< first wait without retry-after; doubles each retry
+  double max_wait_s = 60; ///< longest wait honoured from retry-after
+  /// Polled during transfers and retry waits; true stops with vcg_ext::CancelledError.
+  std::function<bool()> cancelled;
   /// Replaces the network for one attempt (the fuzz targets feed the backends' response
   /// handling through it); empty: libcurl.
   std::function<HttpResponse(const HttpRequest&)> transport;
 };
 
-/// A transfer that did not produce an HTTP response (connection, timeout, cancel, size cap).
+/// A transfer that did not produce an HTTP response (connection, timeout, size cap).
 class HttpError : public std::runtime_error {
 public:
   explicit HttpError(const std::string& what) : std::runtime_error(what) {}
 };
 
 /// Sends `request`, retrying on 408/409/429/5xx as `options` say; returns the last response
-/// (which may still be an error status). Throws HttpError when no response arrives.
+/// (which may still be an error status). Throws HttpError when no response arrives, and
+/// vcg_ext::CancelledError when `options.cancelled` asks to stop: a stop is no failure of the
+/// service, so callers that retry elsewhere or report a service error let it pass.
 HttpResponse SendWithRetries(const HttpRequest& request, const HttpOptions& options);
 
 } // namespace curvature_inpaint

@@ -363,8 +363,7 @@ std::vector<QImage> ComfyUi(const QImage& image, const QImage& mask, const Inpai
       if (std::chrono::steady_clock::now() > deadline)
         throw InpaintError(backend + ": the prompt did not finish within " +
                            std::to_string(int(p.http.total_timeout_s)) + " s");
-      if (p.http.cancelled && p.http.cancelled())
-        throw InpaintError(backend + ": cancelled by the user");
+      if (p.http.cancelled && p.http.cancelled()) throw vcg_ext::CancelledError();
       std::this_thread::sleep_for(std::chrono::milliseconds(200));
     }
     for (const auto& node : outputs)

@@ -71,7 +71,8 @@ const BackendInfo& DescribeBackend(const std::string& backend);
 std::string DefaultPrompt(const std::string& backend);
 
 /// Completes the hole of `image` (white pixels of `mask`, same size) into params.variations
-/// images of the same size. Throws InpaintError.
+/// images of the same size. Throws InpaintError, or vcg_ext::CancelledError when
+/// params.http.cancelled asks to stop.
 std::vector<QImage> Inpaint(const QImage& image, const QImage& mask, const InpaintParams& params);
 
 /// The embedded backend alone: biharmonic continuation of the curvature field plus detail

@@ -59,11 +59,6 @@ std::vector<QImage> ServerPool::Inpaint(const QImage& image, const QImage& mask,
       Release(server, true);
       return out;
     } catch (const InpaintError& e) {
-      // A stop the user asked for is no failure of the server: the next one is not tried.
-      if (params.http.cancelled && params.http.cancelled()) {
-        Release(server, true);
-        throw;
-      }
       Release(server, false);
       tried.insert(server);
       last = e.what();
@@ -71,7 +66,9 @@ std::vector<QImage> ServerPool::Inpaint(const QImage& image, const QImage& mask,
         throw InpaintError("every one of the " + std::to_string(urls_.size()) +
                            " servers failed; the last: " + last);
     } catch (...) {
-      Release(server, true); // cancelled: the server is not to blame
+      // A stop the user asked for (CancelledError) is no failure of the server: it is handed
+      // back unblamed and the next one is not tried.
+      Release(server, true);
       throw;
     }
   }

@@ -28,8 +28,8 @@ public:
   /// Inpaint() on one of the servers (params.url replaced, params.pool ignored); on an
   /// InpaintError the next untried server, best first. Throws InpaintError naming the last
   /// server's error when every server failed. A stop asked for through params.http.cancelled
-  /// (Inpaint's InpaintError "cancelled by the user") is no server's failure: it is rethrown
-  /// as it is, without trying another server. Thread-safe.
+  /// (vcg_ext::CancelledError) is no server's failure: it passes through without trying
+  /// another server. Thread-safe.
   std::vector<QImage> Inpaint(const QImage& image, const QImage& mask, const InpaintParams& params);
 
   /// Per server: the requests it answered.
