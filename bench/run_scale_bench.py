@@ -93,6 +93,8 @@ def main():
                 ("ours: whole method without the priors (`--no-symmetry --no-creases --no-tri-laplacian`)",
                  [tool, "fill", ten, out, "--no-symmetry", "--no-creases", "--no-tri-laplacian"]),
                 ("ours: whole method without fake holes", [tool, "fill", ten, out, "--fake-holes", "0"]),
+                ("ours: the variations alone (`preview`, what the dialog shows before applying)",
+                 [tool, "preview", ten, os.path.join(tmp, "preview")]),
                 ("CGAL: triangulate_refine_and_fair_hole", [os.path.join(BIN, "cgal_fill"), ten, out])):
             runs = sorted(measured(args)[:2] for _ in range(3))
             rows.append(f"| {label} | {runs[1][0]:.2f} | {runs[1][1]:.0f} |")

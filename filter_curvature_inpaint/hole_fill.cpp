@@ -752,8 +752,11 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& 
   // crease) is filled exactly by the coarse fill's flat cap; curvature painted from farther
   // context (a crease or a curved face nearby) and fake holes cut there could only bend it.
   // Asked for by kind or number, a variation is still made.
-  const bool automatic = params.pick == 0 && params.pick_kind.empty() && !params.oracle &&
-                         params.inpainted_dir.empty();
+  const bool listed = k < params.hole_picks.size();
+  const int pick = listed ? params.hole_picks[k] : params.pick;
+  const std::string pick_kind = listed ? std::string() : params.pick_kind;
+  const bool automatic =
+      pick == 0 && pick_kind.empty() && !params.oracle && params.inpainted_dir.empty();
   if (automatic && ctx.coarse->holes[size_t(hi.hole)].planar_cap) {
     hv.problem = "a flat cap in its plane; it keeps its coarse fill";
     return hv;
@@ -825,10 +828,15 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& 
     hv.variations = {KnownPixelsKept(done, hv.image, hv.mask)};
   }
   hv.inpaint_s = Since(t);
-  ScoreAndPick(hv, params.pick);
-  if (!params.pick_kind.empty())
+  if (listed && pick > int(hv.variations.size()))
+    throw std::invalid_argument("hole " + std::to_string(k + 1) + " has no variation " +
+                                std::to_string(pick) + " (it has " +
+                                std::to_string(hv.variations.size()) + ")");
+  ScoreAndPick(hv, pick);
+  if (pick < 0) hv.pick = 0, hv.problem = "asked to keep its coarse fill";
+  if (!pick_kind.empty())
     for (size_t j = 0; j < hv.variations.size(); ++j)
-      if (KindOf(hv, j) == params.pick_kind) {
+      if (KindOf(hv, j) == pick_kind) {
         hv.pick = int(j) + 1;
         break;
       }
@@ -895,23 +903,51 @@ int FakeHoleThreads(const vcg_ext::CoarseFillResult& coarse, int threads) {
   return std::max(1, vcg_ext::ThreadCount(threads) / std::max(1, coarse.FilledCount()));
 }
 
-/// One row of the montage: coarse, mask, variations (the pick framed), final.
+/// One row of the montage: coarse, mask, variations (the pick framed), and the final image
+/// where there is one (a preview has none).
 QImage MontageRow(const HoleVariations& hv, int pick, const QImage& final_image) {
-  const int cell = 192, pad = 6, cells = int(hv.variations.size()) + 3;
+  std::vector<QImage> tiles{hv.image, hv.mask};
+  tiles.insert(tiles.end(), hv.variations.begin(), hv.variations.end());
+  if (!final_image.isNull()) tiles.push_back(final_image);
+  const int cell = 192, pad = 6, cells = int(tiles.size());
   QImage row(cells * (cell + pad) + pad, cell + 2 * pad, QImage::Format_RGB32);
   row.fill(QColor(40, 40, 48));
   QPainter painter(&row);
-  std::vector<QImage> tiles{hv.image, hv.mask};
-  tiles.insert(tiles.end(), hv.variations.begin(), hv.variations.end());
-  tiles.push_back(final_image);
   for (int c = 0; c < cells; ++c) {
     const QRect r(pad + c * (cell + pad), pad, cell, cell);
     if (pick > 0 && c == pick + 1)
       painter.fillRect(r.adjusted(-pad / 2, -pad / 2, pad / 2, pad / 2), QColor(255, 255, 255));
-    painter.drawImage(r, tiles[c]);
+    painter.drawImage(r, tiles[size_t(c)]);
   }
   painter.end();
   return row;
+}
+
+/// Writes hole k's pictures into `dir` as hole_<k+1>_coarse.png, _mask.png, _variation_<j>.png
+/// and, where it has one, _final.png; returns its montage row.
+QImage SaveHoleImages(const HoleVariations& hv, size_t k, int pick, const QImage& final_image,
+                      const std::string& dir) {
+  const std::string base = dir + "/hole_" + std::to_string(k + 1);
+  SavePng(hv.image, base + "_coarse.png");
+  SavePng(hv.mask, base + "_mask.png");
+  for (size_t j = 0; j < hv.variations.size(); ++j)
+    SavePng(hv.variations[j], base + "_variation_" + std::to_string(j + 1) + ".png");
+  if (!final_image.isNull()) SavePng(final_image, base + "_final.png");
+  return MontageRow(hv, pick, final_image);
+}
+
+/// The rows stacked into one picture, left-aligned on the montage's dark background.
+void SaveMontage(const std::vector<QImage>& rows, const std::string& path) {
+  if (rows.empty()) return;
+  int w = 0, h = 0;
+  for (const auto& r : rows) w = std::max(w, r.width()), h += r.height();
+  QImage montage(w, h, QImage::Format_RGB32);
+  montage.fill(QColor(40, 40, 48));
+  QPainter painter(&montage);
+  int y = 0;
+  for (const auto& r : rows) painter.drawImage(0, y, r), y += r.height();
+  painter.end();
+  SavePng(montage, path);
 }
 
 /// Stages 8-9 for hole k: its variations (given, or from the backend), the pick, and the
@@ -1147,6 +1183,7 @@ void CheckHoleFillParams(const HoleFillParams& p) {
   CheckCurvatureImagesParams(p.images);
   CheckInpaintParams(p.inpaint);
   RequireRange(p.pick, 0, 10, "the variation to use");
+  for (int pick : p.hole_picks) RequireRange(pick, -1, 1000, "a hole's variation to use");
   RequireRange(p.direct.iterations, 1, 100, "the deformation solves");
   RequireRange(p.direct.apss_passes, 0, 20, "the curvature passes");
   RequireRange(p.direct.apss_gain, 1e-3, 1, "the curvature passes' gain");
@@ -1231,13 +1268,8 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
     // (its final image is then the coarse one, and no variation is framed).
     if (!params.images_dir.empty() && !hv.variations.empty()) {
       if (final_image.isNull()) final_image = hv.image;
-      const std::string base = params.images_dir + "/hole_" + std::to_string(k + 1);
-      SavePng(hv.image, base + "_coarse.png");
-      SavePng(hv.mask, base + "_mask.png");
-      for (size_t j = 0; j < hv.variations.size(); ++j)
-        SavePng(hv.variations[j], base + "_variation_" + std::to_string(j + 1) + ".png");
-      SavePng(final_image, base + "_final.png");
-      w->montage_row = MontageRow(hv, w->report.pick, final_image);
+      w->montage_row =
+          SaveHoleImages(hv, size_t(k), w->report.pick, final_image, params.images_dir);
     }
     std::vector<uint8_t>().swap(hi.image.rgb);
     std::vector<uint8_t>().swap(hi.image.hole);
@@ -1277,17 +1309,7 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
         if (free[i])
           m.vert[hi.patch.vertices[i]].P() = result.coarse.box.FromUnit<Scalarm>(w.points[i]);
     }
-    if (!montage_rows.empty()) {
-      int w = 0, h = 0;
-      for (const auto& r : montage_rows) w = std::max(w, r.width()), h += r.height();
-      QImage montage(w, h, QImage::Format_RGB32);
-      montage.fill(QColor(40, 40, 48));
-      QPainter painter(&montage);
-      int y = 0;
-      for (const auto& r : montage_rows) painter.drawImage(0, y, r), y += r.height();
-      painter.end();
-      SavePng(montage, params.images_dir + "/montage.png");
-    }
+    SaveMontage(montage_rows, params.images_dir + "/montage.png");
   } catch (...) {
     checkpoint.Restore();
     throw;
@@ -1320,6 +1342,39 @@ std::string DescribeValidation(const std::vector<std::string>& candidates,
   if (choice >= 0 && size_t(choice) < candidates.size()) o << "; chose " << candidates[choice];
   if (!note.empty()) o << " (" << note << ")";
   return o.str();
+}
+
+void SaveVariationImages(const std::vector<HoleVariations>& holes, const std::string& dir) {
+  if (!QDir().mkpath(QString::fromStdString(dir))) throw std::runtime_error("cannot create " + dir);
+  std::vector<QImage> rows;
+  for (size_t k = 0; k < holes.size(); ++k)
+    if (!holes[k].variations.empty())
+      rows.push_back(SaveHoleImages(holes[k], k, holes[k].pick, QImage(), dir));
+  SaveMontage(rows, dir + "/montage.png");
+}
+
+std::vector<std::string> DescribeVariations(const std::vector<HoleVariations>& holes) {
+  std::vector<std::string> lines;
+  for (size_t k = 0; k < holes.size(); ++k) {
+    const HoleVariations& hv = holes[k];
+    const std::string hole = "hole " + std::to_string(k + 1) + ": ";
+    if (!hv.candidates.empty() || !hv.validation_note.empty())
+      lines.push_back(hole + "validation " +
+                      DescribeValidation(hv.candidates, hv.validation_errors, hv.choice,
+                                         hv.fake_holes, hv.mirror_fake_holes, hv.validation_note));
+    if (hv.variations.empty()) {
+      lines.push_back(hole + "no variations: " + hv.problem);
+      continue;
+    }
+    std::string line = hole + "variations";
+    for (size_t j = 0; j < hv.variations.size(); ++j)
+      line += (j ? ", " : " ") + std::to_string(j + 1) + " " + KindOf(hv, j) + " (score " +
+              QString::number(j < hv.scores.size() ? hv.scores[j] : 0, 'g', 4).toStdString() + ")";
+    line += hv.pick > 0 ? "; fill picks " + std::to_string(hv.pick)
+                        : std::string("; fill keeps the coarse fill");
+    lines.push_back(line);
+  }
+  return lines;
 }
 
 std::vector<std::string> DescribeHoleFill(const HoleFillResult& result) {

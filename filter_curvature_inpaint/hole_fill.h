@@ -55,6 +55,10 @@ struct HoleFillParams {
   /// Non-empty: the first variation of this kind ("creases", ...) of every hole that has one,
   /// the automatic pick elsewhere (benchmarks: what a prior does where it applies).
   std::string pick_kind;
+  /// Per hole, by the holes' numbers (those of `preview` and the report), instead of `pick` and
+  /// `pick_kind`: 0 the automatic pick, -1 the coarse fill, k >= 1 variation k. Holes past the
+  /// list take `pick` and `pick_kind`.
+  std::vector<int> hole_picks;
   vcg_ext::DirectDeformationParams direct;
   vcg_ext::PaperDeformationParams paper;
   ValidationParams validation;
@@ -189,6 +193,17 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
 /// FillHoles.
 std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& params,
                                          vcg::CallBackPos* cb = nullptr);
+
+/// Writes a preview's pictures into `dir` (made if missing), under the names `fill --images`
+/// uses: per hole with variations hole_<k>_coarse.png, hole_<k>_mask.png and
+/// hole_<k>_variation_<j>.png, and montage.png with a row per hole, its pick framed. Throws
+/// std::runtime_error naming a file that cannot be written.
+void SaveVariationImages(const std::vector<HoleVariations>& holes, const std::string& dir);
+
+/// Per hole of a preview: its validation line (as in the fill's log), then its variations by
+/// number and kind with their scores and the pick fill makes with the same options, or why it
+/// has none.
+std::vector<std::string> DescribeVariations(const std::vector<HoleVariations>& holes);
 
 /// Asks the backend again for one hole (a "re-roll"): new variations (the embedded backend at
 /// the hole's own amplitude, `hole.detail`), scores and the automatic pick.

@@ -2,6 +2,7 @@
 import json
 import math
 import os
+import re
 import unittest
 
 from support import (SHARED_MESHES, SOURCE, TOOL, TempDirTest, grid, info, png_size,
@@ -378,6 +379,50 @@ class DetailAndValidation(TempDirTest):
         r = run([TOOL, "fill", self.SAMPLE, self.path("x.ply"), "--pick", "mirror"])
         self.assertEqual(r.returncode, 2)
         self.assertIn("--pick needs auto, a variation number >= 1 or a kind", r.stderr)
+
+    def test_preview_shows_the_fills_variations_and_a_list_picks_per_hole(self):
+        before = sha256(self.SAMPLE)
+        pictures = self.path("preview")
+        r = run([TOOL, "preview", self.SAMPLE, pictures, "--size", "256"])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(sha256(self.SAMPLE), before)  # the mesh is only read
+        auto, holes, log = self.fill()
+        self.assertEqual(len(holes), 3)
+        lines = r.stdout.splitlines()
+        for k, h in enumerate(holes, 1):
+            # The validation as the fill logs it, and the fill's variations and pick.
+            self.assertIn(f"hole {k}: validation " + log.split(f"validation {k}: ")[1].split("\n")[0],
+                          lines)
+            line = next(l for l in lines if l.startswith(f"hole {k}: variations "))
+            shown = re.findall(r"(\d+) ([a-z -]+) \(score ", line)
+            self.assertEqual([int(j) for j, _ in shown], list(range(1, len(h["kinds"]) + 1)))
+            self.assertEqual([kind for _, kind in shown], h["kinds"])
+            self.assertTrue(line.endswith(f"; fill picks {h['pick']}"), line)
+            for j in range(1, len(h["kinds"]) + 1):
+                self.assertEqual(png_size(os.path.join(pictures, f"hole_{k}_variation_{j}.png")),
+                                 (256, 256))
+            self.assertFalse(os.path.exists(os.path.join(pictures, f"hole_{k}_final.png")))
+        self.assertTrue(os.path.exists(os.path.join(pictures, "montage.png")))
+        # One entry per hole: the last variation of hole 1 (not what fill picks by itself),
+        # hole 2's coarse fill, hole 3 as fill picks it.
+        last = len(holes[0]["kinds"])
+        self.assertNotEqual(holes[0]["pick"], last)
+        picked, listed, _ = self.fill("--pick", f"{last},coarse,auto")
+        self.assertEqual(listed[0]["pick"], last)
+        self.assertEqual(listed[0]["kind"], holes[0]["kinds"][last - 1])
+        self.assertEqual(listed[1]["pick"], 0)
+        self.assertEqual(listed[1]["problem"], "asked to keep its coarse fill")
+        self.assertEqual(listed[2]["pick"], holes[2]["pick"])
+        self.assertNotEqual(picked, auto)
+        r = run([TOOL, "fill", self.SAMPLE, self.path("x.ply"), "--pick", "1,99"])
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("hole 2 has no variation 99", r.stderr)
+        self.assertFalse(os.path.exists(self.path("x.ply")))
+        r = run([TOOL, "fill", self.SAMPLE, self.path("x.ply"), "--pick", "1,first"])
+        self.assertEqual(r.returncode, 2)
+        self.assertIn('"first" is not auto, coarse or a variation number', r.stderr)
+        r = run([TOOL, "preview", self.SAMPLE, pictures, "--report", self.path("r.json")])
+        self.assertEqual(r.returncode, 2)
 
     def test_no_fake_holes_is_the_variation_score(self):
         _, holes, log = self.fill("--fake-holes", "0")

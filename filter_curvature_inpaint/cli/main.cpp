@@ -28,8 +28,9 @@ namespace {
 const char* const kUsage =
     "usage:\n"
     "  curvature-inpaint fill IN OUT [--backend NAME] [--url URL] [--model M] [--prompt TEXT]\n"
-    "                   [--variations N] [--pick auto|K] [--mode direct|paper] [--similitude S]\n"
-    "                   [--transformation-constant T] [--max-hole-edges N] [--size PX]\n"
+    "                   [--variations N] [--pick auto|K|KIND|A,B,...] [--mode direct|paper]\n"
+    "                   [--similitude S] [--transformation-constant T] [--max-hole-edges N]\n"
+    "                   [--size PX]\n"
     "                   [--images DIR] [--report FILE.json] [--from-images DIR] [--context C]\n"
     "                   [--fake-holes K] [--fake-hole-size PX] [--detail A] [--density D]\n"
     "                   [--no-symmetry] [--exemplar] [--no-creases] [--no-tri-laplacian]\n"
@@ -38,7 +39,8 @@ const char* const kUsage =
     "      inpainting, deformation to the chosen variation) and write OUT. --pick auto (default)\n"
     "      takes the validated (or best-scored) variation; --pick KIND the first variation of\n"
     "      that kind where a hole has one (exemplar, symmetry, symmetry surface, creases,\n"
-    "      face, tri-laplacian).\n"
+    "      face, tri-laplacian); --pick A,B,... one entry per hole as `preview` numbers them,\n"
+    "      each auto, coarse (keep the coarse fill) or a variation number.\n"
     "      Backends and their options as for inpaint.\n"
     "      --from-images DIR deforms to hole_<k>_inpainted.png, inpainted by hand in DIR\n"
     "      after `images IN DIR --size PX` (same --max-hole-edges, --context, --size).\n"
@@ -66,6 +68,12 @@ const char* const kUsage =
     "      before its holes were cut: the best any inpainter can do with this deformation\n"
     "      (the fill at density 2.5 unless --density is given: a finer one, to carry\n"
     "      the truth's detail).\n"
+    "  curvature-inpaint preview IN DIR [fill options but --images, --report, --oracle]\n"
+    "      The variations fill would choose from, without changing any mesh: per hole its\n"
+    "      validation and its variations by number and kind with their scores and the\n"
+    "      automatic pick on stdout, and in DIR hole_<k>_coarse.png, hole_<k>_mask.png,\n"
+    "      hole_<k>_variation_<j>.png and montage.png (the automatic pick framed). Then\n"
+    "      `fill IN OUT --pick K` (or --pick KIND) with the same options applies one.\n"
     "  curvature-inpaint coarse IN OUT [--max-hole-edges N] [--max-hole-diameter F]\n"
     "                   [--keep-longest-open] [--selected-only] [--liepa-max-edges M] [--threads "
     "T]\n"
@@ -308,6 +316,43 @@ int InpaintCommand(Args& args) {
   return 0;
 }
 
+/// --pick: auto, a variation number or a kind for every hole, or a comma-separated list with
+/// one entry per hole, each auto, coarse or a number (what `preview` showed).
+void ReadPick(const std::string& pick, curvature_inpaint::HoleFillParams& p) {
+  const std::vector<std::string> kinds{"continuation",     "exemplar", "symmetry",
+                                       "symmetry surface", "creases",  "face",
+                                       "tri-laplacian"};
+  if (std::find(kinds.begin(), kinds.end(), pick) != kinds.end()) {
+    p.pick_kind = pick;
+    return;
+  }
+  auto number = [](const std::string& k) {
+    char* end = nullptr;
+    const long n = std::strtol(k.c_str(), &end, 10);
+    return k.empty() || *end != '\0' || n < 1 || n > 1000 ? 0 : int(n);
+  };
+  if (pick.find(',') == std::string::npos) {
+    if (pick == "auto") return;
+    p.pick = number(pick);
+    if (p.pick == 0)
+      throw UsageError("--pick needs auto, a variation number >= 1 or a kind (continuation, "
+                       "exemplar, symmetry, symmetry surface, creases, face, tri-laplacian), or "
+                       "one entry per hole (auto, coarse or a number) separated by commas");
+    return;
+  }
+  size_t from = 0;
+  for (;;) {
+    const size_t comma = pick.find(',', from);
+    const std::string entry = pick.substr(from, comma - from);
+    const int k = entry == "auto" ? 0 : entry == "coarse" ? -1 : number(entry);
+    if (k == 0 && entry != "auto")
+      throw UsageError("--pick: \"" + entry + "\" is not auto, coarse or a variation number >= 1");
+    p.hole_picks.push_back(k);
+    if (comma == std::string::npos) break;
+    from = comma + 1;
+  }
+}
+
 /// The options of `fill` that set its parameters (every one but the files, --report and
 /// --oracle), taken out of `args`.
 curvature_inpaint::HoleFillParams ReadFillOptions(Args& args) {
@@ -324,20 +369,7 @@ curvature_inpaint::HoleFillParams ReadFillOptions(Args& args) {
   p.exemplar = args.Flag("--exemplar");
   p.creases = !args.Flag("--no-creases");
   p.tri_laplacian = !args.Flag("--no-tri-laplacian");
-  const std::string pick = args.Option("--pick", "auto");
-  const std::vector<std::string> kinds{"continuation",     "exemplar", "symmetry",
-                                       "symmetry surface", "creases",  "face",
-                                       "tri-laplacian"};
-  if (std::find(kinds.begin(), kinds.end(), pick) != kinds.end()) {
-    p.pick_kind = pick;
-  } else if (pick != "auto") {
-    char* end = nullptr;
-    const long k = std::strtol(pick.c_str(), &end, 10);
-    if (*end != '\0' || k < 1)
-      throw UsageError("--pick needs auto, a variation number >= 1 or a kind (continuation, "
-                       "exemplar, symmetry, symmetry surface, creases, face, tri-laplacian)");
-    p.pick = int(k);
-  }
+  ReadPick(args.Option("--pick", "auto"), p);
   p.mode = args.Option("--mode", p.mode);
   if (p.mode != "direct" && p.mode != "paper") throw UsageError("--mode is direct or paper");
   const std::string sim = args.Option("--similitude", "");
@@ -383,6 +415,24 @@ int Fill(Args& args) {
     if (!f || std::fwrite(json.data(), 1, json.size(), f) != json.size() || std::fclose(f) != 0)
       throw std::runtime_error("cannot write " + report);
   }
+  return 0;
+}
+
+/// The dialog's preview on the command line: every hole's variations and the automatic pick,
+/// written as pictures; the mesh file is only read. `fill --pick K` (or KIND) then applies one:
+/// the same options and seed give the same variations.
+int Preview(Args& args) {
+  if (args.Has("--images") || args.Has("--report") || args.Has("--oracle"))
+    throw UsageError("preview writes its pictures into DIR; --images, --report and --oracle are "
+                     "fill options");
+  const curvature_inpaint::HoleFillParams p = ReadFillOptions(args);
+  const auto files = args.Positional(2);
+  CMeshO m;
+  curvature_inpaint::LoadMesh(files[0], m);
+  const auto holes = curvature_inpaint::InpaintHoles(m, p, ProgressToStderr);
+  curvature_inpaint::SaveVariationImages(holes, files[1]);
+  for (const auto& line : curvature_inpaint::DescribeVariations(holes))
+    std::printf("%s\n", line.c_str());
   return 0;
 }
 
@@ -497,6 +547,7 @@ int main(int argc, char** argv) {
     if (command == "batch") return Batch(args);
     if (command == "inpaint") return InpaintCommand(args);
     if (command == "punch") return Punch(args);
+    if (command == "preview") return Preview(args);
     if (command == "-h" || command == "--help" || command == "help") {
       std::printf("%s", kUsage);
       return 0;
