@@ -748,13 +748,17 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& 
     hv.problem = hi.problem;
     return hv;
   }
+  const bool listed = k < params.hole_picks.size();
+  const int pick = listed ? params.hole_picks[k] : params.pick;
+  const std::string pick_kind = listed ? std::string() : params.pick_kind;
+  if (pick < 0) {
+    hv.problem = "asked to keep its coarse fill";
+    return hv;
+  }
   // A hole in a plane (its loop planar, the faces around it in that plane or leaving it at a
   // crease) is filled exactly by the coarse fill's flat cap; curvature painted from farther
   // context (a crease or a curved face nearby) and fake holes cut there could only bend it.
   // Asked for by kind or number, a variation is still made.
-  const bool listed = k < params.hole_picks.size();
-  const int pick = listed ? params.hole_picks[k] : params.pick;
-  const std::string pick_kind = listed ? std::string() : params.pick_kind;
   const bool automatic =
       pick == 0 && pick_kind.empty() && !params.oracle && params.inpainted_dir.empty();
   if (automatic && ctx.coarse->holes[size_t(hi.hole)].planar_cap) {
@@ -833,7 +837,6 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& 
                                 std::to_string(pick) + " (it has " +
                                 std::to_string(hv.variations.size()) + ")");
   ScoreAndPick(hv, pick);
-  if (pick < 0) hv.pick = 0, hv.problem = "asked to keep its coarse fill";
   if (!pick_kind.empty())
     for (size_t j = 0; j < hv.variations.size(); ++j)
       if (KindOf(hv, j) == pick_kind) {
@@ -1344,12 +1347,21 @@ std::string DescribeValidation(const std::vector<std::string>& candidates,
   return o.str();
 }
 
-void SaveVariationImages(const std::vector<HoleVariations>& holes, const std::string& dir) {
+void SaveVariationImages(const std::vector<HoleVariations>& holes, const std::string& dir,
+                         int threads) {
   if (!QDir().mkpath(QString::fromStdString(dir))) throw std::runtime_error("cannot create " + dir);
-  std::vector<QImage> rows;
-  for (size_t k = 0; k < holes.size(); ++k)
-    if (!holes[k].variations.empty())
-      rows.push_back(SaveHoleImages(holes[k], k, holes[k].pick, QImage(), dir));
+  // PNG encoding is most of the time here: the holes' pictures are written in parallel.
+  std::vector<QImage> rows(holes.size());
+  vcg_ext::ParallelFor(
+      int(holes.size()), threads,
+      [&](int k) {
+        const HoleVariations& hv = holes[size_t(k)];
+        if (!hv.variations.empty())
+          rows[size_t(k)] = SaveHoleImages(hv, size_t(k), hv.pick, QImage(), dir);
+      },
+      [](int, int) { return true; });
+  rows.erase(std::remove_if(rows.begin(), rows.end(), [](const QImage& r) { return r.isNull(); }),
+             rows.end());
   SaveMontage(rows, dir + "/montage.png");
 }
 

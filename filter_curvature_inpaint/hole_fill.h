@@ -197,8 +197,10 @@ std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& 
 /// Writes a preview's pictures into `dir` (made if missing), under the names `fill --images`
 /// uses: per hole with variations hole_<k>_coarse.png, hole_<k>_mask.png and
 /// hole_<k>_variation_<j>.png, and montage.png with a row per hole, its pick framed. Throws
-/// std::runtime_error naming a file that cannot be written.
-void SaveVariationImages(const std::vector<HoleVariations>& holes, const std::string& dir);
+/// std::runtime_error naming a file that cannot be written. `threads`: holes written at once
+/// (0: one per core).
+void SaveVariationImages(const std::vector<HoleVariations>& holes, const std::string& dir,
+                         int threads = 0);
 
 /// Per hole of a preview: its validation line (as in the fill's log), then its variations by
 /// number and kind with their scores and the pick fill makes with the same options, or why it

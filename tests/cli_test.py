@@ -412,6 +412,7 @@ class DetailAndValidation(TempDirTest):
         self.assertEqual(listed[0]["kind"], holes[0]["kinds"][last - 1])
         self.assertEqual(listed[1]["pick"], 0)
         self.assertEqual(listed[1]["problem"], "asked to keep its coarse fill")
+        self.assertNotIn("validation", listed[1])  # neither validated nor inpainted
         self.assertEqual(listed[2]["pick"], holes[2]["pick"])
         self.assertNotEqual(picked, auto)
         r = run([TOOL, "fill", self.SAMPLE, self.path("x.ply"), "--pick", "1,99"])

@@ -430,7 +430,7 @@ int Preview(Args& args) {
   CMeshO m;
   curvature_inpaint::LoadMesh(files[0], m);
   const auto holes = curvature_inpaint::InpaintHoles(m, p, ProgressToStderr);
-  curvature_inpaint::SaveVariationImages(holes, files[1]);
+  curvature_inpaint::SaveVariationImages(holes, files[1], p.images.coarse.threads);
   for (const auto& line : curvature_inpaint::DescribeVariations(holes))
     std::printf("%s\n", line.c_str());
   return 0;
