@@ -70,10 +70,10 @@ const char* const kUsage =
     "      the truth's detail).\n"
     "  curvature-inpaint preview IN DIR [fill options but --images, --report, --oracle]\n"
     "      The variations fill would choose from, without changing any mesh: per hole its\n"
-    "      validation and its variations by number and kind with their scores and the\n"
-    "      automatic pick on stdout, and in DIR hole_<k>_coarse.png, hole_<k>_mask.png,\n"
-    "      hole_<k>_variation_<j>.png and montage.png (the automatic pick framed). Then\n"
-    "      `fill IN OUT --pick K` (or --pick KIND) with the same options applies one.\n"
+    "      validation and its variations by number and kind with their scores and the pick\n"
+    "      fill would make on stdout, and in DIR hole_<k>_coarse.png, hole_<k>_mask.png,\n"
+    "      hole_<k>_variation_<j>.png and montage.png (the pick framed). Then `fill IN OUT\n"
+    "      --pick A,B,...` with the same options applies a choice per hole.\n"
     "  curvature-inpaint coarse IN OUT [--max-hole-edges N] [--max-hole-diameter F]\n"
     "                   [--keep-longest-open] [--selected-only] [--liepa-max-edges M] [--threads "
     "T]\n"
@@ -418,9 +418,9 @@ int Fill(Args& args) {
   return 0;
 }
 
-/// The dialog's preview on the command line: every hole's variations and the automatic pick,
-/// written as pictures; the mesh file is only read. `fill --pick K` (or KIND) then applies one:
-/// the same options and seed give the same variations.
+/// The dialog's preview on the command line: every hole's variations and the pick fill would
+/// make, written as pictures; the mesh file is only read. `fill --pick A,B,...` then applies a
+/// choice per hole: the same options and seed give the same variations.
 int Preview(Args& args) {
   if (args.Has("--images") || args.Has("--report") || args.Has("--oracle"))
     throw UsageError("preview writes its pictures into DIR; --images, --report and --oracle are "
