@@ -167,6 +167,14 @@ CurvatureImagesResult ComputeCurvatureImages(CMeshO& m, const CurvatureImagesPar
     std::stable_sort(largest_first.begin(), largest_first.end(), [&](int a, int b) {
       return regions[size_t(a)].faces.size() > regions[size_t(b)].faces.size();
     });
+    // Progress after each hole this thread builds and, while it waits for the others' last
+    // ones, every 50 ms: the count still moves, and a stop is still heard.
+    auto report = [&](int done) {
+      const std::string msg =
+          std::string(sink ? "Curvature Inpaint: hole " : "Curvature images: hole ") +
+          std::to_string(done) + " of " + std::to_string(filled.size());
+      return !cb || cb(int(100.0 * done / filled.size()), msg.c_str());
+    };
     vcg_ext::ParallelFor(
         int(filled.size()), params.coarse.threads,
         [&](int task) {
@@ -179,12 +187,7 @@ CurvatureImagesResult ComputeCurvatureImages(CMeshO& m, const CurvatureImagesPar
           hi.seconds = seg_each + std::chrono::duration<double>(Clock::now() - t0).count();
           if (sink) sink(result.coarse, i, hi);
         },
-        [&](int, int done) {
-          const std::string msg =
-              std::string(sink ? "Curvature Inpaint: hole " : "Curvature images: hole ") +
-              std::to_string(done) + " of " + std::to_string(filled.size());
-          return !cb || cb(int(100.0 * done / filled.size()), msg.c_str());
-        });
+        [&](int, int done) { return report(done); }, report);
   } catch (...) {
     checkpoint.Restore();
     throw;

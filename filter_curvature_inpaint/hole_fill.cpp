@@ -887,8 +887,9 @@ InpaintParams WithCancel(const HoleFillParams& params, vcg::CallBackPos* cb, con
   return inpaint;
 }
 
-/// ParallelFor's report over holes: the callback with the holes done, on the calling thread;
-/// a stop it asks for also reaches the requests running on the other threads.
+/// ParallelFor's report over holes (after each of the calling thread's holes, and while it
+/// waits for the others'): the callback with the holes done, on the calling thread; a stop it
+/// asks for also reaches the requests running on the other threads.
 auto HolesDone(vcg::CallBackPos* cb, int* progress, int count, const char* what,
                const std::shared_ptr<CancelRequest>& cancel) {
   return [=](int, int done) {
@@ -1107,12 +1108,13 @@ std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& 
     throw vcg_ext::CancelledError();
   std::vector<HoleVariations> holes(static_cast<size_t>(count));
   const int at_once = InpaintsLocally(params) ? threads : RequestsAtOnce(pool.get());
+  const auto report = HolesDone(cb, &progress, count, "inpainted", cancel);
   vcg_ext::ParallelFor(
       count, at_once,
       [&](int k) {
         holes[size_t(k)] = InpaintHole(images.holes[size_t(k)], size_t(k), params, inpaint, ctx);
       },
-      HolesDone(cb, &progress, count, "inpainted", cancel));
+      report, [&report](int done) { return report(-1, done); });
   return holes;
 }
 
@@ -1288,10 +1290,11 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
                                ": preview again with the same settings");
     if (!local) {
       const int count = int(images.holes.size());
+      const auto report = HolesDone(cb, &progress, count, "inpainted and deformed", cancel);
       vcg_ext::ParallelFor(
           count, RequestsAtOnce(pool.get()),
-          [&](int k) { fill_hole(result.coarse, k, images.holes[k]); },
-          HolesDone(cb, &progress, count, "inpainted and deformed", cancel));
+          [&](int k) { fill_hole(result.coarse, k, images.holes[k]); }, report,
+          [&report](int done) { return report(-1, done); });
     }
     if (symmetry) {
       result.symmetry_detected = true;

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -19,11 +21,14 @@ inline int ThreadCount(int threads) {
 }
 
 /// Runs work(i) for i in [0, count) on `threads` threads (0: one per core), this thread
-/// included. After each task this thread runs, done(i, finished so far) is called on it;
-/// returning false stops the others picking new tasks and throws CancelledError. An exception
-/// from a task is rethrown here after every thread has stopped.
-template <class Work, class Done>
-void ParallelFor(int count, int threads, Work work, Done done) {
+/// included. After each task this thread runs, done(i, finished so far) is called on it. Once
+/// it has no task left, idle(finished so far) is called on it about every 50 ms until the other
+/// threads have finished theirs, and once when they have: a task elsewhere may wait on what only
+/// this thread may ask (MeshLab's callback: whether the user pressed Stop), and the count still
+/// moves to the end. Either returning false stops the others picking new tasks and throws
+/// CancelledError. An exception from a task is rethrown here after every thread has stopped.
+template <class Work, class Done, class Idle>
+void ParallelFor(int count, int threads, Work work, Done done, Idle idle) {
   threads = std::max(1, std::min(ThreadCount(threads), count));
   std::atomic<int> next{0}, finished{0};
   std::atomic<bool> stop{false};
@@ -43,12 +48,36 @@ void ParallelFor(int count, int threads, Work work, Done done) {
       if (report && !done(i, n)) stop = true;
     }
   };
+  std::mutex waiting;
+  std::condition_variable others_done;
+  int others = threads - 1;
+  auto other = [&] {
+    run(false);
+    std::lock_guard<std::mutex> lock(waiting);
+    if (--others == 0) others_done.notify_one();
+  };
   std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(run, false);
+  for (int t = 1; t < threads; ++t) pool.emplace_back(other);
   run(true);
+  {
+    std::unique_lock<std::mutex> lock(waiting);
+    while (!others_done.wait_for(lock, std::chrono::milliseconds(50), [&] { return others == 0; }))
+      if (!stop) {
+        lock.unlock();
+        if (!idle(int(finished))) stop = true;
+        lock.lock();
+      }
+  }
   for (auto& t : pool) t.join();
+  if (threads > 1 && !stop && !idle(int(finished))) stop = true;
   if (error) std::rethrow_exception(error);
   if (stop) throw CancelledError();
+}
+
+/// ParallelFor without a call while this thread waits for the others.
+template <class Work, class Done>
+void ParallelFor(int count, int threads, Work work, Done done) {
+  ParallelFor(count, threads, work, done, [](int) { return true; });
 }
 
 } // namespace vcg_ext

@@ -215,8 +215,12 @@ void ReadHoleSelection(Args& args, vcg_ext::CoarseFillParams& p) {
   p.selected_only = args.Flag("--selected-only");
 }
 
+/// The pipeline's progress, one line per new message: while it waits on a slow task it asks
+/// again every 50 ms with the same one.
 bool ProgressToStderr(const int, const char* message) {
-  std::fprintf(stderr, "%s\n", message);
+  static std::string last;
+  if (message != last) std::fprintf(stderr, "%s\n", message);
+  last = message;
   return true;
 }
 
