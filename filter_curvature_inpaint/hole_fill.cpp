@@ -887,12 +887,12 @@ InpaintParams WithCancel(const HoleFillParams& params, vcg::CallBackPos* cb, con
   return inpaint;
 }
 
-/// ParallelFor's report over holes (after each of the calling thread's holes, and while it
-/// waits for the others'): the callback with the holes done, on the calling thread; a stop it
+/// The report over holes, given the holes done (ParallelFor's after each of the calling thread's
+/// holes, and while it waits for the others'): the callback, on the calling thread; a stop it
 /// asks for also reaches the requests running on the other threads.
 auto HolesDone(vcg::CallBackPos* cb, int* progress, int count, const char* what,
                const std::shared_ptr<CancelRequest>& cancel) {
-  return [=](int, int done) {
+  return [=](int done) {
     *progress = int(100.0 * done / std::max(count, 1));
     const std::string msg = std::string("Curvature Inpaint: ") + what + " hole " +
                             std::to_string(done) + " of " + std::to_string(count);
@@ -1114,7 +1114,7 @@ std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& 
       [&](int k) {
         holes[size_t(k)] = InpaintHole(images.holes[size_t(k)], size_t(k), params, inpaint, ctx);
       },
-      report, [&report](int done) { return report(-1, done); });
+      [&report](int, int done) { return report(done); }, report);
   return holes;
 }
 
@@ -1293,8 +1293,8 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
       const auto report = HolesDone(cb, &progress, count, "inpainted and deformed", cancel);
       vcg_ext::ParallelFor(
           count, RequestsAtOnce(pool.get()),
-          [&](int k) { fill_hole(result.coarse, k, images.holes[k]); }, report,
-          [&report](int done) { return report(-1, done); });
+          [&](int k) { fill_hole(result.coarse, k, images.holes[k]); },
+          [&report](int, int done) { return report(done); }, report);
     }
     if (symmetry) {
       result.symmetry_detected = true;
