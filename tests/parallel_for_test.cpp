@@ -65,4 +65,31 @@ TEST(ParallelFor, EveryTaskRunsOnceAndTheCountReachesTheEnd) {
   EXPECT_EQ(last_done, 100); // the end is reported, whichever thread finished last
 }
 
+TEST(ParallelFor, TheCountReachesTheEndWhenAnotherThreadFinishesLast) {
+  // The calling thread's task ends as soon as the other thread has the other task, which ends
+  // 200 ms later: only the call after the wait can report both done.
+  const std::thread::id caller = std::this_thread::get_id();
+  std::atomic<bool> other_started{false};
+  int last_reported = 0;
+  vcg_ext::ParallelFor(
+      2, 2,
+      [&](int) {
+        if (std::this_thread::get_id() == caller) {
+          while (!other_started) std::this_thread::yield();
+          return;
+        }
+        other_started = true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+      },
+      [&](int, int finished) {
+        last_reported = finished;
+        return true;
+      },
+      [&](int finished) {
+        last_reported = finished;
+        return true;
+      });
+  EXPECT_EQ(last_reported, 2);
+}
+
 } // namespace
