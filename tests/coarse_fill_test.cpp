@@ -6,6 +6,9 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
+#include <utility>
+#include <vector>
 
 using test::Mesh;
 
@@ -42,6 +45,29 @@ TEST(CoarseFill, SphereHolesComeBackWatertightAndOnTheSphere) {
     EXPECT_GT(h.new_vertices.size(), 5u) << "refinement should match the sphere's density";
   }
   EXPECT_LT(MaxRadiusError(m, result, radius), 0.01);
+}
+
+std::vector<std::pair<int, std::string>> progress_seen;
+bool RecordProgress(int percent, const char* message) {
+  progress_seen.emplace_back(percent, message);
+  return true;
+}
+
+// One hole per thread: the calling thread fills one of the four, and the count must still
+// reach the end when another thread finishes last.
+TEST(CoarseFill, ProgressCountsTheHolesOtherThreadsFill) {
+  Mesh m;
+  test::MakeSphere(m, 1.0f);
+  for (const auto& d : kDirections) test::PunchSphere(m, d, 1.0f, 30);
+  vcg_ext::CoarseFillParams params;
+  params.threads = 4;
+  progress_seen.clear();
+
+  vcg_ext::CoarseFill(m, params, RecordProgress);
+
+  ASSERT_FALSE(progress_seen.empty());
+  EXPECT_EQ(progress_seen.back().first, 100);
+  EXPECT_EQ(progress_seen.back().second, "Coarse fill: hole 4 of 4");
 }
 
 TEST(CoarseFill, VcgEarsCloseLoopsBeyondTheDynamicProgramme) {

@@ -367,13 +367,16 @@ CoarseFillResult CoarseFill(MeshType& m, const CoarseFillParams& params = {},
     report.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
-  ParallelFor(count, params.threads, fill, [&](int h, int done) {
+  // The holes another thread fills are counted while this one waits for them: a large hole
+  // there can take most of the time.
+  auto report = [&](int done) {
     if (!cb) return true;
-    const std::string msg = "Coarse fill: hole " + std::to_string(done) + " of " +
-                            std::to_string(count) + " (" +
-                            std::to_string(loops.holes[h].EdgeCount()) + " edges)";
+    const std::string msg =
+        "Coarse fill: hole " + std::to_string(done) + " of " + std::to_string(count);
     return cb(int(100.0 * done / std::max(count, 1)), msg.c_str());
-  });
+  };
+  ParallelFor(
+      count, params.threads, fill, [&](int, int done) { return report(done); }, report);
   // Two loops meeting at pinch vertices could both add the same chord between them: the
   // first in loop order keeps it.
   std::set<std::pair<int, int>> chords;
