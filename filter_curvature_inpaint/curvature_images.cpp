@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <numeric>
@@ -27,7 +28,7 @@ using Clock = std::chrono::steady_clock;
 
 double Percentile(std::vector<double> v, double q) {
   if (v.empty()) return 0;
-  const size_t k = std::min(v.size() - 1, size_t(q * (v.size() - 1) + 0.5));
+  const size_t k = std::min(v.size() - 1, size_t(std::lround(q * double(v.size() - 1))));
   std::nth_element(v.begin(), v.begin() + k, v.end());
   return v[k];
 }

@@ -243,7 +243,7 @@ DetectReflectiveSymmetry(const PointIndex& index, const std::vector<Eigen::Vecto
       const double len = (p - q).norm();
       if (len < 4 * params.tolerance) continue;
       const Eigen::Vector3d m = (p - q) / len;
-      const Eigen::Vector3d np = normals[size_t(samples[a])];
+      const Eigen::Vector3d& np = normals[size_t(samples[a])];
       if ((np - 2 * np.dot(m) * m).dot(normals[size_t(samples[b])]) < 0.95) continue;
       const SymmetryPlane pl = detail::Canonical(m, m.dot(p + q) / 2);
       const int64_t key = (int64_t(std::lround(pl.normal.x() * 10)) + 16) +

@@ -24,6 +24,7 @@
 
 #include <cstdlib>
 #include <limits>
+#include <utility>
 
 namespace curvature_inpaint {
 
@@ -397,7 +398,7 @@ void HoleFillDialog::RunWorker(std::function<void()> work, std::function<void()>
   SetBusy(true);
   auto error = std::make_shared<QString>();
   const auto cancel = cancel_requested_;
-  worker_ = QThread::create([work, error, cancel] {
+  worker_ = QThread::create([work = std::move(work), error, cancel] {
     try {
       work();
     } catch (const std::exception& e) {
@@ -405,7 +406,7 @@ void HoleFillDialog::RunWorker(std::function<void()> work, std::function<void()>
       *error = *cancel ? QString("Stopped.") : QString::fromStdString(e.what());
     }
   });
-  connect(worker_, &QThread::finished, this, [this, error, done] {
+  connect(worker_, &QThread::finished, this, [this, error, done = std::move(done)] {
     worker_->deleteLater();
     worker_ = nullptr;
     g_worker_dialog = nullptr;
