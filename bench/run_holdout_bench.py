@@ -2,7 +2,7 @@
 """The held-out hole benchmark (bench/holes.tsv): the whole method against CGAL's filler and
 MeshLab's Close Holes, hole by hole, on one half of the table.
 
-    python3 bench/run_holdout_bench.py [--split test|tuning] [--plots] [--oracle]
+    python3 bench/run_holdout_bench.py [--split test|tuning|dev] [--plots] [--oracle]
                                        [--sweep-detail 0,0.5,1,2] [--variant "NAME=ARGS"]...
                                        [--only MESH[,MESH...]] [-- FILL ARGS...]
 
@@ -18,7 +18,8 @@ inpainter) with its per-stage curvature spreads. --sweep-detail runs `fill --det
 A (choose the default on the tuning half); --variant runs `fill ARGS` as a column NAME ({gt} in
 ARGS is the hole's ground truth); variants named after a validation candidate (for example
 "creases=--pick creases --fake-holes 0") enter the validated-choice table.
---only keeps the rows of the named meshes (file names without .ply). --plots writes docs/holdout_rms_ratio.png and
+--split dev runs the 48 development holes (see holes()), where a choice needs more holes than
+the tuning half's 16. --only keeps the rows of the named meshes (file names without .ply). --plots writes docs/holdout_rms_ratio.png and
 docs/holdout_detail_vs_rms.png (gnuplot). FILL ARGS go to every `fill` run.
 """
 import json
@@ -40,14 +41,28 @@ TOOL = os.path.join(BIN, "curvature-inpaint")
 BENCH = os.path.join(BIN, "bench_tools")
 
 
+DEVELOPMENT_SEEDS = range(9001, 9007)
+
+
 def holes(split):
+    """The rows of one half of the table; for "dev", the development holes: the table's
+    placement rule at seeds 9001-9006 of each of its meshes, radius 0.035 at odd seeds and
+    0.05 at even ones (never reported as results; where a choice needs more holes than the
+    tuning half)."""
+    rows, meshes = [], []
     with open(os.path.join(ROOT, "bench", "holes.tsv")) as f:
         for line in f:
             if line.startswith("#") or line.startswith("mesh\t") or not line.strip():
                 continue
             mesh, seed, frac, half = line.rstrip("\n").split("\t")
+            if mesh not in meshes:
+                meshes.append(mesh)
             if half == split:
-                yield mesh, int(seed), frac
+                rows.append((mesh, int(seed), frac))
+    if split == "dev":
+        rows = [(mesh, seed, "0.035" if seed % 2 else "0.05")
+                for mesh in meshes for seed in DEVELOPMENT_SEEDS]
+    return rows
 
 
 def info(path):
