@@ -188,7 +188,7 @@ CurvatureImagesResult ComputeCurvatureImages(CMeshO& m, const CurvatureImagesPar
           hi.seconds = seg_each + std::chrono::duration<double>(Clock::now() - t0).count();
           if (sink) sink(result.coarse, i, hi);
         },
-        [&](int, int done) { return report(done); }, report);
+        report);
   } catch (...) {
     checkpoint.Restore();
     throw;

@@ -699,13 +699,10 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
   // own slot, so the choice does not depend on how many there are.
   std::vector<FakeHoleTrial> tried(fakes.size());
   std::vector<char> filled(fakes.size(), 0);
-  vcg_ext::ParallelFor(
-      int(fakes.size()), ctx.threads,
-      [&](int i) {
-        filled[size_t(i)] =
-            TryFakeHole(*fakes[size_t(i)], candidates, params, inpaint, ctx, tried[size_t(i)]);
-      },
-      [](int, int) { return true; });
+  vcg_ext::ParallelFor(int(fakes.size()), ctx.threads, [&](int i) {
+    filled[size_t(i)] =
+        TryFakeHole(*fakes[size_t(i)], candidates, params, inpaint, ctx, tried[size_t(i)]);
+  });
   std::vector<FakeHoleTrial> trials;
   for (size_t i = 0; i < tried.size(); ++i)
     if (filled[i]) trials.push_back(std::move(tried[i]));
@@ -1114,7 +1111,7 @@ std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& 
       [&](int k) {
         holes[size_t(k)] = InpaintHole(images.holes[size_t(k)], size_t(k), params, inpaint, ctx);
       },
-      [&report](int, int done) { return report(done); }, report);
+      report);
   return holes;
 }
 
@@ -1293,8 +1290,7 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
       const auto report = HolesDone(cb, &progress, count, "inpainted and deformed", cancel);
       vcg_ext::ParallelFor(
           count, RequestsAtOnce(pool.get()),
-          [&](int k) { fill_hole(result.coarse, k, images.holes[k]); },
-          [&report](int, int done) { return report(done); }, report);
+          [&](int k) { fill_hole(result.coarse, k, images.holes[k]); }, report);
     }
     if (symmetry) {
       result.symmetry_detected = true;
@@ -1355,14 +1351,11 @@ void SaveVariationImages(const std::vector<HoleVariations>& holes, const std::st
   if (!QDir().mkpath(QString::fromStdString(dir))) throw std::runtime_error("cannot create " + dir);
   // PNG encoding is most of the time here: the holes' pictures are written in parallel.
   std::vector<QImage> rows(holes.size());
-  vcg_ext::ParallelFor(
-      int(holes.size()), threads,
-      [&](int k) {
-        const HoleVariations& hv = holes[size_t(k)];
-        if (!hv.variations.empty())
-          rows[size_t(k)] = SaveHoleImages(hv, size_t(k), hv.pick, QImage(), dir);
-      },
-      [](int, int) { return true; });
+  vcg_ext::ParallelFor(int(holes.size()), threads, [&](int k) {
+    const HoleVariations& hv = holes[size_t(k)];
+    if (!hv.variations.empty())
+      rows[size_t(k)] = SaveHoleImages(hv, size_t(k), hv.pick, QImage(), dir);
+  });
   rows.erase(std::remove_if(rows.begin(), rows.end(), [](const QImage& r) { return r.isNull(); }),
              rows.end());
   SaveMontage(rows, dir + "/montage.png");

@@ -375,8 +375,7 @@ CoarseFillResult CoarseFill(MeshType& m, const CoarseFillParams& params = {},
         "Coarse fill: hole " + std::to_string(done) + " of " + std::to_string(count);
     return cb(int(100.0 * done / std::max(count, 1)), msg.c_str());
   };
-  ParallelFor(
-      count, params.threads, fill, [&](int, int done) { return report(done); }, report);
+  ParallelFor(count, params.threads, fill, report);
   // Two loops meeting at pinch vertices could both add the same chord between them: the
   // first in loop order keeps it.
   std::set<std::pair<int, int>> chords;

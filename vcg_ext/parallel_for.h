@@ -74,10 +74,19 @@ void ParallelFor(int count, int threads, Work work, Done done, Idle idle) {
   if (stop) throw CancelledError();
 }
 
-/// ParallelFor without a call while this thread waits for the others.
-template <class Work, class Done>
-void ParallelFor(int count, int threads, Work work, Done done) {
-  ParallelFor(count, threads, work, done, [](int) { return true; });
+/// ParallelFor with one progress(finished so far) for both: after each task this thread runs,
+/// and while it waits for the others'.
+template <class Work, class Progress>
+void ParallelFor(int count, int threads, Work work, Progress progress) {
+  ParallelFor(
+      count, threads, work, [&progress](int, int finished) { return progress(finished); },
+      progress);
+}
+
+/// ParallelFor with no progress and no stop.
+template <class Work>
+void ParallelFor(int count, int threads, Work work) {
+  ParallelFor(count, threads, work, [](int) { return true; });
 }
 
 } // namespace vcg_ext

@@ -271,12 +271,9 @@ DetectReflectiveSymmetry(const PointIndex& index, const std::vector<Eigen::Vecto
   {
     const std::vector<int> quick(samples.begin(),
                                  samples.begin() + std::min<size_t>(samples.size(), 300));
-    ParallelFor(
-        int(guesses.size()), params.threads,
-        [&](int k) {
-          detail::MeasurePlane(quick, normals, index, 2 * params.tolerance, guesses[size_t(k)]);
-        },
-        [](int, int) { return true; });
+    ParallelFor(int(guesses.size()), params.threads, [&](int k) {
+      detail::MeasurePlane(quick, normals, index, 2 * params.tolerance, guesses[size_t(k)]);
+    });
     std::stable_sort(
         guesses.begin(), guesses.end(),
         [](const SymmetryPlane& a, const SymmetryPlane& b) { return a.coverage > b.coverage; });
@@ -285,15 +282,12 @@ DetectReflectiveSymmetry(const PointIndex& index, const std::vector<Eigen::Vecto
 
   // Each guess is refined on its own; the index answers queries from any thread.
   std::vector<SymmetryPlane> refined(guesses);
-  ParallelFor(
-      int(refined.size()), params.threads,
-      [&](int k) {
-        SymmetryPlane& plane = refined[size_t(k)];
-        detail::RefinePlane(samples, normals, index, params, plane);
-        plane = detail::Canonical(plane.normal, plane.offset);
-        detail::MeasurePlane(evaluate, normals, index, params.tolerance, plane);
-      },
-      [](int, int) { return true; });
+  ParallelFor(int(refined.size()), params.threads, [&](int k) {
+    SymmetryPlane& plane = refined[size_t(k)];
+    detail::RefinePlane(samples, normals, index, params, plane);
+    plane = detail::Canonical(plane.normal, plane.offset);
+    detail::MeasurePlane(evaluate, normals, index, params.tolerance, plane);
+  });
   std::stable_sort(
       refined.begin(), refined.end(),
       [](const SymmetryPlane& a, const SymmetryPlane& b) { return a.coverage > b.coverage; });
