@@ -4,7 +4,8 @@ MeshLab's Close Holes, hole by hole, on one half of the table.
 
     python3 bench/run_holdout_bench.py [--split test|tuning|dev] [--plots] [--oracle]
                                        [--sweep-detail 0,0.5,1,2] [--variant "NAME=ARGS"]...
-                                       [--only MESH[,MESH...]] [-- FILL ARGS...]
+                                       [--only MESH[,MESH...]] [--seeds FIRST-LAST]
+                                       [-- FILL ARGS...]
 
 Per hole: hole-region RMS (mean of both directions) and Hausdorff distance (the larger of
 both maxima), each as a ratio to CGAL's on the same hole (below 1: closer to the ground truth
@@ -19,8 +20,10 @@ A (choose the default on the tuning half); --variant runs `fill ARGS` as a colum
 ARGS is the hole's ground truth); variants named after a validation candidate (for example
 "creases=--pick creases --fake-holes 0") enter the validated-choice table.
 --split dev runs the 48 development holes (see holes()), where a choice needs more holes than
-the tuning half's 16. --only keeps the rows of the named meshes (file names without .ply). --plots writes docs/holdout_rms_ratio.png and
-docs/holdout_detail_vs_rms.png (gnuplot). FILL ARGS go to every `fill` run.
+the tuning half's 16; --seeds FIRST-LAST draws them at those seeds instead of 9001-9006 (the
+README's 24 more fandisk holes: --split dev --seeds 9007-9030 --only fandisk). --only keeps the
+rows of the named meshes (file names without .ply). --plots writes docs/holdout_rms_ratio.png
+and docs/holdout_detail_vs_rms.png (gnuplot). FILL ARGS go to every `fill` run.
 """
 import json
 import os
@@ -44,7 +47,7 @@ BENCH = os.path.join(BIN, "bench_tools")
 DEVELOPMENT_SEEDS = range(9001, 9007)
 
 
-def holes(split):
+def holes(split, seeds=DEVELOPMENT_SEEDS):
     """The rows of one half of the table; for "dev", the development holes: the table's
     placement rule at seeds 9001-9006 of each of its meshes, radius 0.035 at odd seeds and
     0.05 at even ones (never reported as results; where a choice needs more holes than the
@@ -61,7 +64,7 @@ def holes(split):
                 rows.append((mesh, int(seed), frac))
     if split == "dev":
         rows = [(mesh, seed, "0.035" if seed % 2 else "0.05")
-                for mesh in meshes for seed in DEVELOPMENT_SEEDS]
+                for mesh in meshes for seed in seeds]
     return rows
 
 
@@ -305,7 +308,11 @@ def main():
         with open(script, "w") as f:
             f.write(CLOSE_HOLES)
         only = argv[argv.index("--only") + 1].split(",") if "--only" in argv else None
-        for mesh, seed, frac in holes(split):
+        seeds = DEVELOPMENT_SEEDS
+        if "--seeds" in argv:
+            first, last = argv[argv.index("--seeds") + 1].split("-")
+            seeds = range(int(first), int(last) + 1)
+        for mesh, seed, frac in holes(split, seeds):
             if only and os.path.splitext(mesh)[0] not in only:
                 continue
             gt, inp, v = punch(tmp, mesh, seed, frac)
