@@ -15,7 +15,7 @@ import sys
 import tempfile
 import shutil
 
-from run_coarse_bench import BIN, BUILD, ROOT, SHARED, build, sh
+from run_coarse_bench import BIN, BUILD, ROOT, SHARED, build, check_args, sh
 from run_holdout_bench import punch
 
 sys.path.insert(0, os.path.join(ROOT, "tests"))
@@ -32,6 +32,7 @@ CASES = [("igea_nose", "igea_190k.ply", 21537, "0.05", None),
 
 
 def main():
+    check_args(__doc__)
     build()
     tmp = tempfile.mkdtemp(prefix="pictures-")
     try:

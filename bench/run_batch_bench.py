@@ -21,7 +21,7 @@ import sys
 import tempfile
 import time
 
-from run_coarse_bench import BIN, ROOT, SHARED, build, sh, table
+from run_coarse_bench import BIN, ROOT, SHARED, build, check_args, sh, table
 
 sys.path.insert(0, os.path.join(ROOT, "tests"))
 os.environ.setdefault("CI_BUILD_DIR", os.path.dirname(BIN))
@@ -57,6 +57,7 @@ def pool_table(tmp):
 
 
 def main():
+    check_args(__doc__, valued=("--scans",))
     count = int(sys.argv[sys.argv.index("--scans") + 1]) if "--scans" in sys.argv else 100
     build()
     tmp = tempfile.mkdtemp(prefix="batch-bench-")

@@ -27,6 +27,31 @@ BIN = os.path.join(BUILD, "bin")
 RUNS = 3
 
 
+def check_args(usage, flags=(), valued=()):
+    """Exits before any work where the command line is not the benchmark's: its usage (the
+    module's docstring) on -h or --help, and status 2 on an option it does not know, rather
+    than a run of many minutes with the option ignored. `flags` take no value, `valued` one;
+    what follows "--" is left to the caller."""
+    argv = sys.argv[1:]
+    if "--" in argv:
+        argv = argv[:argv.index("--")]
+    i = 0
+    while i < len(argv):
+        a = argv[i]
+        if a in ("-h", "--help"):
+            print(usage.strip())
+            sys.exit(0)
+        if a in valued and i + 1 < len(argv):
+            i += 2
+            continue
+        if a not in flags:
+            why = "needs a value" if a in valued else "is not an option of this benchmark"
+            print(f"{os.path.basename(sys.argv[0])}: {a} {why} (--help lists them)",
+                  file=sys.stderr)
+            sys.exit(2)
+        i += 1
+
+
 def sh(args, **kw):
     r = subprocess.run(args, capture_output=True, text=True, **kw)
     if r.returncode != 0:
@@ -135,6 +160,7 @@ def table(title, header, rows):
 
 
 def main():
+    check_args(__doc__)
     build()
     tmp = tempfile.mkdtemp(prefix="coarse-bench-")
     try:

@@ -20,8 +20,8 @@ import sys
 import tempfile
 import time
 
-from run_coarse_bench import (BIN, CLOSE_HOLES, SHARED, build, case_input, cases, cgal, dist, meshlab,
-                              meshlab_prefix, metrics, sh, table)
+from run_coarse_bench import (BIN, CLOSE_HOLES, SHARED, build, case_input, cases, cgal, check_args,
+                              dist, meshlab, meshlab_prefix, metrics, sh, table)
 from run_holdout_bench import detail_text
 
 DOCS = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "docs")
@@ -69,6 +69,7 @@ def plot(path, title, xlabel, logx, series):
 
 
 def main():
+    check_args(__doc__, flags=("--no-sweeps",))
     sweeps = "--no-sweeps" not in sys.argv
     build()
     if sweeps:

@@ -36,7 +36,8 @@ import tempfile
 import shutil
 import time
 
-from run_coarse_bench import BIN, CLOSE_HOLES, ROOT, SHARED, build, meshlab_prefix, sh
+from run_coarse_bench import (BIN, CLOSE_HOLES, ROOT, SHARED, build, check_args, meshlab_prefix,
+                              sh)
 
 DOCS = os.path.join(ROOT, "docs")
 MACHINED_PARTS = ("fandisk", "rocker_arm")  # the table's CAD meshes, whose creases are meant
@@ -287,6 +288,8 @@ def print_report(rows, split, sweep, variants, oracle, plots):
 
 
 def main():
+    check_args(__doc__, flags=("--plots", "--oracle"),
+               valued=("--split", "--sweep-detail", "--variant", "--from-json", "--only", "--seeds"))
     argv = sys.argv[1:]
     fill_args = argv[argv.index("--") + 1:] if "--" in argv else []
     argv = argv[:argv.index("--")] if "--" in argv else argv

@@ -14,7 +14,7 @@ import statistics
 import tempfile
 import time
 
-from run_coarse_bench import BIN, SHARED, build, sh, table
+from run_coarse_bench import BIN, SHARED, build, check_args, sh, table
 
 RUNS = 3
 
@@ -32,6 +32,7 @@ def images(inp, out):
 
 
 def main():
+    check_args(__doc__)
     build()
     tmp = tempfile.mkdtemp(prefix="images-bench-")
     try:

@@ -20,7 +20,7 @@ import sys
 import tempfile
 import time
 
-from run_coarse_bench import BIN, SHARED, build, case_input, cases, sh, table
+from run_coarse_bench import BIN, SHARED, build, case_input, cases, check_args, sh, table
 
 SIZE = 256
 
@@ -73,6 +73,7 @@ def ssim(a, b):
 
 
 def main():
+    check_args(__doc__)
     ensure_opencv()
     build()
     import cv2

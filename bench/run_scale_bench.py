@@ -18,7 +18,8 @@ import subprocess
 import sys
 import tempfile
 
-from run_coarse_bench import BIN, CLOSE_HOLES, SHARED, build, meshlab_prefix, sh, table
+from run_coarse_bench import (BIN, CLOSE_HOLES, SHARED, build, check_args, meshlab_prefix, sh,
+                              table)
 
 
 def measured(args):
@@ -62,6 +63,7 @@ def hundreds(tmp, tool, tools, parts, out):
 
 
 def main():
+    check_args(__doc__, flags=("--ten",))
     build()
     if not os.path.exists("/usr/bin/time"):
         prefix = [] if os.geteuid() == 0 else ["sudo"]
