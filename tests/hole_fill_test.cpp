@@ -970,6 +970,41 @@ TEST(Creases, AHoleThatTakesAPlatesWholeCornerEdgeBringsItBack) {
         << "at z = " << z;
 }
 
+// A step: the cube's top runs down a 45-degree slope from a convex crease (x = 0) to a
+// concave one (x = 0.5) and on at half its height. A hole over the slope takes both creases;
+// the faces' solid must be their intersection at the convex crease and their union at the
+// concave one, both in the same fill.
+TEST(Creases, AHoleOverAStepBringsBackItsConvexAndConcaveCreases) {
+  CMeshO m;
+  MakeCube(m, 24);
+  auto step = [](double x) { return 1 - std::min(0.5, std::max(0.0, x)); };
+  for (auto& v : m.vert)
+    if (v.cP()[2] == 1) v.P()[2] = Scalarm(step(double(v.cP()[0])));
+  vcg_ext::PunchHole(m, Point3m(0.25f, 0, 0.75f), Scalarm(0.45));
+  const size_t scan_vertices = m.vert.size();
+  const auto result = FillWithoutSymmetry(m);
+  ASSERT_EQ(result.holes.size(), 1u);
+  const auto& r = result.holes[0];
+  ASSERT_TRUE(r.problem.empty()) << r.problem;
+  EXPECT_EQ(r.kind, "creases") << curvature_inpaint::DescribeValidation(
+      r.candidates, r.validation_errors, r.choice, r.fake_holes, r.mirror_fake_holes,
+      r.validation_note);
+  double worst = 0;
+  for (size_t v = scan_vertices; v < m.vert.size(); ++v)
+    worst = std::max(worst, std::abs(double(m.vert[v].cP()[2]) - step(double(m.vert[v].cP()[0]))));
+  EXPECT_LT(worst, 0.02) << "a fill vertex off the step (height)";
+  vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
+  const Scalarm off = Scalarm(2.0 / 24 / 3);
+  for (Scalarm y : {Scalarm(-0.1), Scalarm(0), Scalarm(0.1)}) {
+    EXPECT_NEAR(DihedralDegrees(m, Point3m(-off, y, 1), Point3m(off, y, 1 - off)), 45, 5)
+        << "the convex crease at y = " << y;
+    EXPECT_NEAR(DihedralDegrees(m, Point3m(Scalarm(0.5) - off, y, Scalarm(0.5) + off),
+                                Point3m(Scalarm(0.5) + off, y, Scalarm(0.5))),
+                45, 5)
+        << "the concave crease at y = " << y;
+  }
+}
+
 // A hole in a cylinder's side a ring below the edge where the flat end meets it: one face all
 // around the hole, a crease beyond it. The crease prior offers that face extended across the
 // hole (before, it offered nothing: "fewer than two smooth faces meet at it").
