@@ -294,6 +294,17 @@ def main():
     fill_args = argv[argv.index("--") + 1:] if "--" in argv else []
     argv = argv[:argv.index("--")] if "--" in argv else argv
     split = argv[argv.index("--split") + 1] if "--split" in argv else "test"
+    if split not in ("test", "tuning", "dev"):
+        print(f"run_holdout_bench.py: --split is test, tuning or dev, not {split}", file=sys.stderr)
+        sys.exit(2)
+    seeds = DEVELOPMENT_SEEDS
+    if "--seeds" in argv:
+        given = re.fullmatch(r"(\d+)-(\d+)", argv[argv.index("--seeds") + 1])
+        if split != "dev" or not given or int(given.group(1)) > int(given.group(2)):
+            print("run_holdout_bench.py: --seeds FIRST-LAST (FIRST <= LAST) goes with --split dev",
+                  file=sys.stderr)
+            sys.exit(2)
+        seeds = range(int(given.group(1)), int(given.group(2)) + 1)
     sweep = [a for a in argv[argv.index("--sweep-detail") + 1].split(",")] if "--sweep-detail" in argv else []
     oracle = "--oracle" in argv
     variants = [argv[i + 1].split("=", 1) for i, a in enumerate(argv) if a == "--variant"]
@@ -311,10 +322,6 @@ def main():
         with open(script, "w") as f:
             f.write(CLOSE_HOLES)
         only = argv[argv.index("--only") + 1].split(",") if "--only" in argv else None
-        seeds = DEVELOPMENT_SEEDS
-        if "--seeds" in argv:
-            first, last = argv[argv.index("--seeds") + 1].split("-")
-            seeds = range(int(first), int(last) + 1)
         for mesh, seed, frac in holes(split, seeds):
             if only and os.path.splitext(mesh)[0] not in only:
                 continue
