@@ -33,6 +33,13 @@ namespace {
 using curvature_inpaint::FillHoles;
 using curvature_inpaint::HoleFillParams;
 
+/// A hole's validation as the log gives it: what a failed expectation on its choice shows.
+std::string Validation(const curvature_inpaint::HoleFillReport& r) {
+  return curvature_inpaint::DescribeValidation(r.candidates, r.validation_errors, r.choice,
+                                               r.fake_holes, r.mirror_fake_holes,
+                                               r.validation_note);
+}
+
 // Bumps whose tip curvature (1 + 2 h / w^2) the colour map's range can hold.
 const double kBumpHeight = 0.025, kBumpWidth = 0.2;
 
@@ -664,11 +671,7 @@ void ExpectTheBumpBackFromItsTwin(const curvature_inpaint::HoleFillResult& resul
   const auto& r = result.holes[0];
   ASSERT_TRUE(r.problem.empty()) << r.problem;
   ASSERT_FALSE(r.candidates.empty()) << r.validation_note;
-  EXPECT_EQ(r.kind.rfind("symmetry", 0), 0u)
-      << "chose " << r.kind << ": "
-      << curvature_inpaint::DescribeValidation(r.candidates, r.validation_errors, r.choice,
-                                               r.fake_holes, r.mirror_fake_holes,
-                                               r.validation_note);
+  EXPECT_EQ(r.kind.rfind("symmetry", 0), 0u) << "chose " << r.kind << ": " << Validation(r);
   // The twin's height is the bump's: the mirror image brings it back.
   EXPECT_NEAR(test::FillHeight(m, scan_vertices, bump), test::kEggBump, 0.1 * test::kEggBump);
 }
@@ -897,9 +900,7 @@ TEST(Creases, AHoleOnACubesEdgeAndOneOnItsCornerComeBackSharp) {
   ASSERT_EQ(result.holes.size(), 2u);
   for (const auto& r : result.holes) {
     ASSERT_TRUE(r.problem.empty()) << r.problem;
-    EXPECT_EQ(r.kind, "creases") << curvature_inpaint::DescribeValidation(
-        r.candidates, r.validation_errors, r.choice, r.fake_holes, r.mirror_fake_holes,
-        r.validation_note);
+    EXPECT_EQ(r.kind, "creases") << Validation(r);
   }
   // Every fill vertex on the cube (the edge straight, the corner where the three faces meet)
   // within 1 % of the edge's length; every fill triangle with its corners on one face lies in
@@ -953,9 +954,7 @@ TEST(Creases, AHoleThatTakesAPlatesWholeCornerEdgeBringsItBack) {
   ASSERT_EQ(result.holes.size(), 1u);
   const auto& r = result.holes[0];
   ASSERT_TRUE(r.problem.empty()) << r.problem;
-  EXPECT_EQ(r.kind, "creases") << curvature_inpaint::DescribeValidation(
-      r.candidates, r.validation_errors, r.choice, r.fake_holes, r.mirror_fake_holes,
-      r.validation_note);
+  EXPECT_EQ(r.kind, "creases") << Validation(r);
   double worst = 0;
   for (size_t v = scan_vertices; v < m.vert.size(); ++v)
     worst = std::max(worst,
@@ -986,9 +985,7 @@ TEST(Creases, AHoleOverAStepBringsBackItsConvexAndConcaveCreases) {
   ASSERT_EQ(result.holes.size(), 1u);
   const auto& r = result.holes[0];
   ASSERT_TRUE(r.problem.empty()) << r.problem;
-  EXPECT_EQ(r.kind, "creases") << curvature_inpaint::DescribeValidation(
-      r.candidates, r.validation_errors, r.choice, r.fake_holes, r.mirror_fake_holes,
-      r.validation_note);
+  EXPECT_EQ(r.kind, "creases") << Validation(r);
   double worst = 0;
   for (size_t v = scan_vertices; v < m.vert.size(); ++v)
     worst = std::max(worst, std::abs(double(m.vert[v].cP()[2]) - step(double(m.vert[v].cP()[0]))));
@@ -1121,9 +1118,7 @@ TEST(TriLaplacian, AHoleOnAnEllipsoidComesBackCloserThanTheThinPlate) {
   const auto validated = FillHoles(m, p);
   ASSERT_EQ(validated.holes.size(), 1u);
   const auto& r = validated.holes[0];
-  EXPECT_EQ(r.kind, "tri-laplacian") << curvature_inpaint::DescribeValidation(
-      r.candidates, r.validation_errors, r.choice, r.fake_holes, r.mirror_fake_holes,
-      r.validation_note);
+  EXPECT_EQ(r.kind, "tri-laplacian") << Validation(r);
   EXPECT_EQ(std::count(r.candidates.begin(), r.candidates.end(), "tri-laplacian"), 1);
   // Off: neither a candidate nor a variation.
   p.tri_laplacian = false;
@@ -1155,9 +1150,7 @@ TEST(FakeHoles, TheRockerArmsFlatStretchKeepsTheSmoothFillItsFakeHolesWouldBend)
     const auto result = FillHoles(m, p);
     ASSERT_EQ(result.holes.size(), 1u);
     const auto& r = result.holes[0];
-    const std::string described =
-        curvature_inpaint::DescribeValidation(r.candidates, r.validation_errors, r.choice,
-                                              r.fake_holes, r.mirror_fake_holes, r.validation_note);
+    const std::string described = Validation(r);
     ASSERT_FALSE(r.candidates.empty()) << described;
     const bool kept = r.validation_note.find("times flatter") != std::string::npos;
     EXPECT_EQ(kept, bool(gated)) << described;
