@@ -57,8 +57,8 @@ def pool_table(tmp):
 
 
 def main():
-    check_args(__doc__, valued=("--scans",))
-    count = int(sys.argv[sys.argv.index("--scans") + 1]) if "--scans" in sys.argv else 100
+    options, _ = check_args(__doc__, valued=("--scans",))
+    count = int(options.get("--scans", 100))
     build()
     tmp = tempfile.mkdtemp(prefix="batch-bench-")
     try:

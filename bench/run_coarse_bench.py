@@ -27,29 +27,39 @@ BIN = os.path.join(BUILD, "bin")
 RUNS = 3
 
 
-def check_args(usage, flags=(), valued=()):
-    """Exits before any work where the command line is not the benchmark's: its usage (the
-    module's docstring) on -h or --help, and status 2 on an option it does not know, rather
-    than a run of many minutes with the option ignored. `flags` take no value, `valued` one;
-    what follows "--" is left to the caller."""
+def check_args(usage, flags=(), valued=(), repeated=()):
+    """The benchmark's command line, checked before any work: its usage (the module's
+    docstring) on -h or --help, status 2 on an option it does not know, rather than a run of
+    many minutes with the option ignored. `flags` take no value, `valued` one, `repeated` one
+    each time they are given. Returns the options given (a flag: True; a valued option: its
+    last value; a repeated one: the list of its values, empty when not given) and the
+    arguments after "--", for the caller to pass on."""
     argv = sys.argv[1:]
-    if "--" in argv:
-        argv = argv[:argv.index("--")]
+    rest = argv[argv.index("--") + 1:] if "--" in argv else []
+    argv = argv[:argv.index("--")] if "--" in argv else argv
+    given = {name: [] for name in repeated}
     i = 0
     while i < len(argv):
         a = argv[i]
         if a in ("-h", "--help"):
             print(usage.strip())
             sys.exit(0)
-        if a in valued and i + 1 < len(argv):
+        if (a in valued or a in repeated) and i + 1 < len(argv):
+            if a in repeated:
+                given[a].append(argv[i + 1])
+            else:
+                given[a] = argv[i + 1]
             i += 2
             continue
         if a not in flags:
-            why = "needs a value" if a in valued else "is not an option of this benchmark"
+            why = ("needs a value" if a in valued or a in repeated
+                   else "is not an option of this benchmark")
             print(f"{os.path.basename(sys.argv[0])}: {a} {why} (--help lists them)",
                   file=sys.stderr)
             sys.exit(2)
+        given[a] = True
         i += 1
+    return given, rest
 
 
 def sh(args, **kw):

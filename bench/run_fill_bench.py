@@ -69,8 +69,8 @@ def plot(path, title, xlabel, logx, series):
 
 
 def main():
-    check_args(__doc__, flags=("--no-sweeps",))
-    sweeps = "--no-sweeps" not in sys.argv
+    options, _ = check_args(__doc__, flags=("--no-sweeps",))
+    sweeps = "--no-sweeps" not in options
     build()
     if sweeps:
         ensure_gnuplot()

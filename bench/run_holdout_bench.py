@@ -288,30 +288,30 @@ def print_report(rows, split, sweep, variants, oracle, plots):
 
 
 def main():
-    check_args(__doc__, flags=("--plots", "--oracle"),
-               valued=("--split", "--sweep-detail", "--variant", "--from-json", "--only", "--seeds"))
-    argv = sys.argv[1:]
-    fill_args = argv[argv.index("--") + 1:] if "--" in argv else []
-    argv = argv[:argv.index("--")] if "--" in argv else argv
-    split = argv[argv.index("--split") + 1] if "--split" in argv else "test"
+    options, fill_args = check_args(
+        __doc__, flags=("--plots", "--oracle"),
+        valued=("--split", "--sweep-detail", "--from-json", "--only", "--seeds"),
+        repeated=("--variant",))
+    split = options.get("--split", "test")
     if split not in ("test", "tuning", "dev"):
         print(f"run_holdout_bench.py: --split is test, tuning or dev, not {split}", file=sys.stderr)
         sys.exit(2)
     seeds = DEVELOPMENT_SEEDS
-    if "--seeds" in argv:
-        given = re.fullmatch(r"(\d+)-(\d+)", argv[argv.index("--seeds") + 1])
+    if "--seeds" in options:
+        given = re.fullmatch(r"(\d+)-(\d+)", options["--seeds"])
         if split != "dev" or not given or int(given.group(1)) > int(given.group(2)):
             print("run_holdout_bench.py: --seeds FIRST-LAST (FIRST <= LAST) goes with --split dev",
                   file=sys.stderr)
             sys.exit(2)
         seeds = range(int(given.group(1)), int(given.group(2)) + 1)
-    sweep = [a for a in argv[argv.index("--sweep-detail") + 1].split(",")] if "--sweep-detail" in argv else []
-    oracle = "--oracle" in argv
-    variants = [argv[i + 1].split("=", 1) for i, a in enumerate(argv) if a == "--variant"]
-    if "--from-json" in argv:  # the tables of an earlier run, from the results it saved
-        with open(argv[argv.index("--from-json") + 1]) as f:
+    sweep = options["--sweep-detail"].split(",") if "--sweep-detail" in options else []
+    oracle = "--oracle" in options
+    plots = "--plots" in options
+    variants = [v.split("=", 1) for v in options["--variant"]]
+    if "--from-json" in options:  # the tables of an earlier run, from the results it saved
+        with open(options["--from-json"]) as f:
             rows = json.load(f)
-        print_report(rows, split, sweep, variants, oracle, "--plots" in argv)
+        print_report(rows, split, sweep, variants, oracle, plots)
         return
     build()
     tmp = tempfile.mkdtemp(prefix="holdout-bench-")
@@ -321,7 +321,7 @@ def main():
         script = os.path.join(tmp, "close_holes.mlx")
         with open(script, "w") as f:
             f.write(CLOSE_HOLES)
-        only = argv[argv.index("--only") + 1].split(",") if "--only" in argv else None
+        only = options["--only"].split(",") if "--only" in options else None
         for mesh, seed, frac in holes(split, seeds):
             if only and os.path.splitext(mesh)[0] not in only:
                 continue
@@ -353,7 +353,7 @@ def main():
             print(f"{row['name']} done", file=sys.stderr, flush=True)
         with open(os.path.join(ROOT, "build-bench", f"holdout_{split}.json"), "w") as f:
             json.dump(rows, f, indent=1)
-        print_report(rows, split, sweep, variants, oracle, "--plots" in argv)
+        print_report(rows, split, sweep, variants, oracle, plots)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 

@@ -15,7 +15,6 @@ import os
 import re
 import shutil
 import subprocess
-import sys
 import tempfile
 
 from run_coarse_bench import (BIN, CLOSE_HOLES, SHARED, build, check_args, meshlab_prefix, sh,
@@ -63,7 +62,7 @@ def hundreds(tmp, tool, tools, parts, out):
 
 
 def main():
-    check_args(__doc__, flags=("--ten",))
+    options, _ = check_args(__doc__, flags=("--ten",))
     build()
     if not os.path.exists("/usr/bin/time"):
         prefix = [] if os.geteuid() == 0 else ["sudo"]
@@ -79,7 +78,7 @@ def main():
             sh([tools, "subdivide", os.path.join(SHARED, "meshes", name + ".ply"), out])
             parts.append(out)
         out = os.path.join(tmp, "out.ply")
-        if "--ten" not in sys.argv:
+        if "--ten" not in options:
             hundreds(tmp, tool, tools, parts, out)
 
         # A scan of 760k faces with ten holes: the fake-hole validation's cost against CGAL's
