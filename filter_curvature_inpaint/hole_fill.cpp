@@ -5,6 +5,7 @@
 #include "inpaint/server_pool.h"
 #include "pipeline.h"
 
+#include <vcg_ext/crease_flips.h>
 #include <vcg_ext/curvature_colormap.h>
 #include <vcg_ext/fill_extent.h>
 #include <vcg_ext/hole_fairing.h>
@@ -1310,6 +1311,11 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
       for (size_t i = 0; i < w.points.size(); ++i)
         if (free[i])
           m.vert[hi.patch.vertices[i]].P() = result.coarse.box.FromUnit<Scalarm>(w.points[i]);
+      // A crease fill's vertices are on the faces and their lines; its triangles are laid
+      // along those lines here, where the mesh, not the patch, holds them.
+      if (w.report.kind == "creases")
+        result.holes.back().crease_flips =
+            vcg_ext::FlipFillEdgesOntoCreases(m, result.coarse.holes[size_t(hi.hole)].new_faces);
     }
     SaveMontage(montage_rows, params.images_dir + "/montage.png");
   } catch (...) {
@@ -1412,6 +1418,9 @@ std::vector<std::string> DescribeHoleFill(const HoleFillResult& result) {
           r.iterations, 1000 * r.images_s, 1000 * r.inpaint_s, 1000 * r.deform_s);
     }
     lines.emplace_back(buf);
+    if (r.crease_flips > 0)
+      lines.back() +=
+          ", " + std::to_string(r.crease_flips) + " fill edges flipped onto its creases";
   }
   return lines;
 }
@@ -1476,6 +1485,7 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
     }
     o << ", \"pick\": " << r.pick;
     if (!r.kind.empty()) o << ", \"kind\": \"" << r.kind << "\"";
+    if (r.kind == "creases") o << ", \"crease_flips\": " << r.crease_flips;
     o << ", \"iterations\": " << r.iterations << ", \"backoffs\": " << r.backoffs
       << ", \"max_move\": " << r.max_move << ", \"seconds\": {\"coarse\": " << r.coarse_s
       << ", \"images\": " << r.images_s << ", \"inpaint\": " << r.inpaint_s

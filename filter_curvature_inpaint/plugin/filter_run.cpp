@@ -262,9 +262,9 @@ int MeshLabFilterClass(const FilterSpec& filter) {
 }
 
 int ChangedMeshParts() {
-  return MeshModel::MM_VERTNUMBER | MeshModel::MM_FACENUMBER | MeshModel::MM_VERTCOORD |
-         MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL | MeshModel::MM_FACEFLAGSELECT |
-         MeshModel::MM_VERTCOLOR | MeshModel::MM_VERTQUALITY;
+  return MeshModel::MM_VERTNUMBER | MeshModel::MM_FACENUMBER | MeshModel::MM_FACEVERT |
+         MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL |
+         MeshModel::MM_FACEFLAGSELECT | MeshModel::MM_VERTCOLOR | MeshModel::MM_VERTQUALITY;
 }
 
 } // namespace plugin
