@@ -1311,11 +1311,11 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
       for (size_t i = 0; i < w.points.size(); ++i)
         if (free[i])
           m.vert[hi.patch.vertices[i]].P() = result.coarse.box.FromUnit<Scalarm>(w.points[i]);
-      // A crease fill's vertices are on the faces and their lines; its triangles are laid
-      // along those lines here, where the mesh, not the patch, holds them.
-      if (w.report.kind == "creases")
-        result.holes.back().crease_flips =
-            vcg_ext::FlipFillEdgesOntoCreases(m, result.coarse.holes[size_t(hi.hole)].new_faces);
+      // The fill's triangles laid along the sharp edges it has (a crease fill's, a mirrored
+      // ridge's), here, where the mesh, not the patch, holds them: the patch's triangles are
+      // the coarse fill's, which every candidate shares.
+      result.holes.back().crease_flips =
+          vcg_ext::FlipFillEdgesOntoCreases(m, result.coarse.holes[size_t(hi.hole)].new_faces);
     }
     SaveMontage(montage_rows, params.images_dir + "/montage.png");
   } catch (...) {
@@ -1419,8 +1419,7 @@ std::vector<std::string> DescribeHoleFill(const HoleFillResult& result) {
     }
     lines.emplace_back(buf);
     if (r.crease_flips > 0)
-      lines.back() +=
-          ", " + std::to_string(r.crease_flips) + " fill edges flipped onto its creases";
+      lines.back() += ", " + std::to_string(r.crease_flips) + " fill edges flipped onto creases";
   }
   return lines;
 }
@@ -1485,7 +1484,7 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
     }
     o << ", \"pick\": " << r.pick;
     if (!r.kind.empty()) o << ", \"kind\": \"" << r.kind << "\"";
-    if (r.kind == "creases") o << ", \"crease_flips\": " << r.crease_flips;
+    o << ", \"crease_flips\": " << r.crease_flips;
     o << ", \"iterations\": " << r.iterations << ", \"backoffs\": " << r.backoffs
       << ", \"max_move\": " << r.max_move << ", \"seconds\": {\"coarse\": " << r.coarse_s
       << ", \"images\": " << r.images_s << ", \"inpaint\": " << r.inpaint_s

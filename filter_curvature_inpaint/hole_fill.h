@@ -101,7 +101,7 @@ struct HoleFillReport {
   int iterations = 0;             ///< deformation solves (direct) or steps (paper)
   int backoffs = 0;           ///< halvings towards the coarse fill that undid a fold or crossing
   std::string kind;           ///< of the variation picked (see HoleVariations::kinds)
-  int crease_flips = 0;       ///< fill edges flipped onto a crease fill's creases
+  int crease_flips = 0;       ///< fill edges flipped onto the fill's creases
   std::vector<int> differing; ///< paper mode: differing vertices per step
   double max_move = 0;        ///< unit-box units
   double coarse_s = 0, images_s = 0, inpaint_s = 0, deform_s = 0;
