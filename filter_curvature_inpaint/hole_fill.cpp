@@ -25,6 +25,7 @@
 #include <chrono>
 #include <cstdio>
 #include <map>
+#include <unordered_map>
 #include <memory>
 #include <mutex>
 #include <sstream>
@@ -1301,6 +1302,8 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
       result.symmetry_s = symmetry->seconds;
     }
     std::vector<QImage> montage_rows;
+    std::vector<int> moved_fills;            // faces of the fills that moved
+    std::unordered_map<int, size_t> hole_of; // fill face -> its hole's report
     for (size_t k = 0; k < images.holes.size(); ++k) {
       const HoleImage& hi = images.holes[k];
       HoleWork& w = work.at(int(k));
@@ -1311,12 +1314,15 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
       for (size_t i = 0; i < w.points.size(); ++i)
         if (free[i])
           m.vert[hi.patch.vertices[i]].P() = result.coarse.box.FromUnit<Scalarm>(w.points[i]);
-      // The fill's triangles laid along the sharp edges it has (a crease fill's, a mirrored
-      // ridge's), here, where the mesh, not the patch, holds them: the patch's triangles are
-      // the coarse fill's, which every candidate shares.
-      result.holes.back().crease_flips =
-          vcg_ext::FlipFillEdgesOntoCreases(m, result.coarse.holes[size_t(hi.hole)].new_faces);
+      for (int f : result.coarse.holes[size_t(hi.hole)].new_faces)
+        moved_fills.push_back(f), hole_of[f] = k;
     }
+    // The fills' triangles laid along the sharp edges they have (a crease fill's, a mirrored
+    // ridge's), here, where the mesh, not the patch, holds them: the patch's triangles are the
+    // coarse fill's, which every candidate shares. One pass for every hole.
+    std::vector<int> flipped;
+    vcg_ext::FlipFillEdgesOntoCreases(m, moved_fills, {}, &flipped);
+    for (size_t i = 0; i < flipped.size(); i += 2) ++result.holes[hole_of[flipped[i]]].crease_flips;
     SaveMontage(montage_rows, params.images_dir + "/montage.png");
   } catch (...) {
     checkpoint.Restore();

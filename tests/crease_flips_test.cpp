@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -49,7 +50,10 @@ TEST(CreaseFlips, AChamferAcrossARidgeIsFlippedOntoIt) {
          {1, 1, -1}},
         {{0, 1, 3}, {1, 2, 4}, {1, 4, 3}, {3, 4, 6}, {3, 6, 5}, {4, 7, 6}});
   const vcg::Point3f up_before = vcg::TriangleNormal(m.face[2]) + vcg::TriangleNormal(m.face[3]);
-  EXPECT_EQ(vcg_ext::FlipFillEdgesOntoCreases(m, AllFaces(m)), 1);
+  std::vector<int> flipped;
+  EXPECT_EQ(vcg_ext::FlipFillEdgesOntoCreases(m, AllFaces(m), {}, &flipped), 1);
+  std::sort(flipped.begin(), flipped.end());
+  EXPECT_EQ(flipped, (std::vector<int>{2, 3})); // the two faces of the chamfer
   // Every triangle now lies in one face of the ridge (its vertices all on one side, the ridge
   // included), and faces up as before.
   for (const auto& f : m.face) {

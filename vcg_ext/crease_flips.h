@@ -63,16 +63,18 @@ double SmallestAngleDegrees(const Coord& a, const Coord& b, const Coord& c) {
 
 } // namespace detail
 
-/// Flips edges between the faces `fill` of `m` (a hole's fill, its vertices in place) where
-/// the other diagonal of their quad bends the surface less in total (see above), round after
-/// round until none does. Only the fill's faces change, and only which of their vertices they
-/// join: no vertex moves, the fill stays oriented as it was, and an edge the mesh already has
-/// is never made. Faces that are not triangles of `fill` are read, never changed. Adjacency the
-/// mesh keeps (face-face, vertex-face) is stale afterwards for the fill's faces; the caller
-/// updates it where it is enabled. Returns the flips made.
+/// Flips edges between the faces `fill` of `m` (the fills of holes, their vertices in place)
+/// where the other diagonal of their quad bends the surface less in total (see above), round
+/// after round until none does. Only the fill's faces change, and only which of their vertices
+/// they join: no vertex moves, the fill stays oriented as it was, and an edge the mesh already
+/// has is never made. Faces that are not triangles of `fill` are read, never changed. One call
+/// serves every hole: it reads the whole mesh once. Adjacency the mesh keeps (face-face,
+/// vertex-face) is stale afterwards for the fill's faces; the caller updates it where it is
+/// enabled. Returns the flips made; `flipped`, if given, gets the two faces of each.
 template <class MeshType>
 int FlipFillEdgesOntoCreases(MeshType& m, const std::vector<int>& fill,
-                             const CreaseFlipParams& params = {}) {
+                             const CreaseFlipParams& params = {},
+                             std::vector<int>* flipped = nullptr) {
   using Coord = typename MeshType::CoordType;
   if (fill.size() < 2) return 0;
   // The fill's faces and every face around its vertices, as vertex indices: those are all the
@@ -105,13 +107,19 @@ int FlipFillEdgesOntoCreases(MeshType& m, const std::vector<int>& fill,
   using Edge = std::pair<int, int>;
   auto key = [](int a, int b) { return Edge{std::min(a, b), std::max(a, b)}; };
   std::map<Edge, std::vector<int>> faces_of;
-  auto index_edges = [&]() {
-    faces_of.clear();
-    for (size_t t = 0; t < tris.size(); ++t)
-      for (int k = 0; k < 3; ++k)
-        faces_of[key(tris[t][size_t(k)], tris[t][size_t((k + 1) % 3)])].push_back(int(t));
+  auto add_edges = [&](int t) {
+    for (int k = 0; k < 3; ++k)
+      faces_of[key(tris[size_t(t)][size_t(k)], tris[size_t(t)][size_t((k + 1) % 3)])].push_back(t);
   };
-  index_edges();
+  auto remove_edges = [&](int t) {
+    for (int k = 0; k < 3; ++k) {
+      const auto it =
+          faces_of.find(key(tris[size_t(t)][size_t(k)], tris[size_t(t)][size_t((k + 1) % 3)]));
+      it->second.erase(std::remove(it->second.begin(), it->second.end(), t), it->second.end());
+      if (it->second.empty()) faces_of.erase(it);
+    }
+  };
+  for (size_t t = 0; t < tris.size(); ++t) add_edges(int(t));
   // The face across edge ab from face t, or -1.
   auto across = [&](int a, int b, int t) {
     const auto it = faces_of.find(key(a, b));
@@ -120,7 +128,7 @@ int FlipFillEdgesOntoCreases(MeshType& m, const std::vector<int>& fill,
   };
   int flips = 0;
   for (int round = 0; round < params.max_rounds; ++round) {
-    int flipped = 0;
+    int flips_this_round = 0;
     for (size_t t1 = 0; t1 < tris.size(); ++t1) {
       if (!is_fill[t1]) continue;
       for (int k = 0; k < 3; ++k) {
@@ -161,15 +169,19 @@ int FlipFillEdgesOntoCreases(MeshType& m, const std::vector<int>& fill,
         side(a, d, t2, before2, after1);
         side(d, b, t2, before2, after2);
         if (!closed || !(bend_after + params.min_gain < bend_before)) continue;
+        remove_edges(int(t1));
+        remove_edges(t2);
         tris[t1] = n1;
         tris[size_t(t2)] = n2;
-        index_edges();
-        ++flipped;
+        add_edges(int(t1));
+        add_edges(t2);
+        if (flipped) flipped->insert(flipped->end(), {mesh_face[t1], mesh_face[size_t(t2)]});
+        ++flips_this_round;
         break; // t1 changed: its other edges are looked at next round
       }
     }
-    flips += flipped;
-    if (flipped == 0) break;
+    flips += flips_this_round;
+    if (flips_this_round == 0) break;
   }
   for (size_t t = 0; t < tris.size(); ++t)
     if (is_fill[t])
