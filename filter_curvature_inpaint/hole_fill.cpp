@@ -25,11 +25,11 @@
 #include <chrono>
 #include <cstdio>
 #include <map>
-#include <unordered_map>
 #include <memory>
 #include <mutex>
 #include <sstream>
 #include <thread>
+#include <unordered_map>
 
 namespace curvature_inpaint {
 

@@ -5,23 +5,23 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cmath>
+#include <array>
 #include <vector>
 
 namespace {
 
 using test::Mesh;
 
-/// Adds the vertices `points` and the faces `faces` (indices into them) to a cleared `m`.
-void Build(Mesh& m, const std::vector<vcg::Point3f>& points,
-           const std::vector<std::array<int, 3>>& faces) {
-  m.Clear();
-  auto v = vcg::tri::Allocator<Mesh>::AddVertices(m, points.size());
-  for (size_t i = 0; i < points.size(); ++i, ++v) v->P() = points[i];
-  auto f = vcg::tri::Allocator<Mesh>::AddFaces(m, faces.size());
-  for (size_t i = 0; i < faces.size(); ++i, ++f)
-    for (int k = 0; k < 3; ++k) f->V(k) = &m.vert[size_t(faces[i][size_t(k)])];
-}
+// A ridge z = -|x| along the y axis, whose middle row has no vertex on the ridge: the two
+// triangles of the edge from one side to the other (faces 2 and 3) cut the ridge off as a
+// chamfer.
+//   A0 (0)  C0 (1)  B0 (2)     y = -1
+//   A1 (3)          B1 (4)     y =  0
+//   A2 (5)  C2 (6)  B2 (7)     y =  1
+const std::vector<vcg::Point3f> kRidgePoints{{-1, -1, -1}, {0, -1, 0},  {1, -1, -1}, {-1, 0, -1},
+                                             {1, 0, -1},   {-1, 1, -1}, {0, 1, 0},   {1, 1, -1}};
+const std::vector<std::array<int, 3>> kRidgeFaces{{0, 1, 3}, {1, 2, 4}, {1, 4, 3},
+                                                  {3, 4, 6}, {3, 6, 5}, {4, 7, 6}};
 
 std::vector<int> AllFaces(const Mesh& m) {
   std::vector<int> all(m.face.size());
@@ -31,24 +31,10 @@ std::vector<int> AllFaces(const Mesh& m) {
 
 } // namespace
 
-// A ridge z = -|x| along the y axis, whose middle row has no vertex on the ridge: the two
-// triangles of the edge from one side to the other cut the ridge off as a chamfer. The flip puts
-// their edge on the ridge, each triangle in one face.
+// The flip puts the chamfer's edge on the ridge, each triangle in one face.
 TEST(CreaseFlips, AChamferAcrossARidgeIsFlippedOntoIt) {
   Mesh m;
-  //   A0 (0)  C0 (1)  B0 (2)     y = -1
-  //   A1 (3)          B1 (4)     y =  0
-  //   A2 (5)  C2 (6)  B2 (7)     y =  1
-  Build(m,
-        {{-1, -1, -1},
-         {0, -1, 0},
-         {1, -1, -1},
-         {-1, 0, -1},
-         {1, 0, -1},
-         {-1, 1, -1},
-         {0, 1, 0},
-         {1, 1, -1}},
-        {{0, 1, 3}, {1, 2, 4}, {1, 4, 3}, {3, 4, 6}, {3, 6, 5}, {4, 7, 6}});
+  vcg::tri::BuildMeshFromCoordVectorIndexVector(m, kRidgePoints, kRidgeFaces);
   const vcg::Point3f up_before = vcg::TriangleNormal(m.face[2]) + vcg::TriangleNormal(m.face[3]);
   std::vector<int> flipped;
   EXPECT_EQ(vcg_ext::FlipFillEdgesOntoCreases(m, AllFaces(m), {}, &flipped), 1);
@@ -87,17 +73,13 @@ TEST(CreaseFlips, ASmoothFillIsLeftAsItIs) {
 // with the chamfer's quad outside the fill, or the ridge's edge already in the mesh, no flip.
 TEST(CreaseFlips, OnlyTheFillChangesAndNoEdgeIsMadeTwice) {
   Mesh m;
-  const std::vector<vcg::Point3f> points{{-1, -1, -1}, {0, -1, 0},  {1, -1, -1}, {-1, 0, -1},
-                                         {1, 0, -1},   {-1, 1, -1}, {0, 1, 0},   {1, 1, -1}};
-  const std::vector<std::array<int, 3>> faces{{0, 1, 3}, {1, 2, 4}, {1, 4, 3},
-                                              {3, 4, 6}, {3, 6, 5}, {4, 7, 6}};
-  Build(m, points, faces);
+  vcg::tri::BuildMeshFromCoordVectorIndexVector(m, kRidgePoints, kRidgeFaces);
   EXPECT_EQ(vcg_ext::FlipFillEdgesOntoCreases(m, {0, 1, 4, 5}), 0);
   // The edge C0-C2 (1-6) already there, as the side of a face elsewhere in the mesh.
-  std::vector<vcg::Point3f> more(points);
+  std::vector<vcg::Point3f> more(kRidgePoints);
   more.push_back({0, 0, 5});
-  std::vector<std::array<int, 3>> with_edge(faces);
+  std::vector<std::array<int, 3>> with_edge(kRidgeFaces);
   with_edge.push_back({1, 8, 6});
-  Build(m, more, with_edge);
+  vcg::tri::BuildMeshFromCoordVectorIndexVector(m, more, with_edge);
   EXPECT_EQ(vcg_ext::FlipFillEdgesOntoCreases(m, {0, 1, 2, 3, 4, 5}), 0);
 }

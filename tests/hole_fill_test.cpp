@@ -757,12 +757,7 @@ void MakeCube(CMeshO& m, int n) {
             faces.push_back({va, vb, vc}), faces.push_back({va, vc, vd});
         }
     }
-  m.Clear();
-  auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, points.size());
-  for (size_t i = 0; i < points.size(); ++i, ++vi) vi->P() = points[i];
-  auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, faces.size());
-  for (size_t f = 0; f < faces.size(); ++f, ++fi)
-    for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[size_t(faces[f][size_t(k)])];
+  vcg::tri::BuildMeshFromCoordVectorIndexVector(m, points, faces);
   vcg::tri::UpdateBounding<CMeshO>::Box(m);
   vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
 }

@@ -43,22 +43,14 @@ Coord UnitNormal(const Coord& a, const Coord& b, const Coord& c) {
 /// The angle between two unit normals, degrees.
 template <class Coord>
 double BendDegrees(const Coord& n, const Coord& m) {
-  return std::acos(std::max(-1.0, std::min(1.0, double(n * m)))) * 180 / M_PI;
+  return vcg::math::ToDeg(double(vcg::AngleN(n, m)));
 }
 
-/// The smallest angle of triangle abc, degrees.
+/// The smallest angle of triangle abc, degrees (below 0 where an edge has no length).
 template <class Coord>
 double SmallestAngleDegrees(const Coord& a, const Coord& b, const Coord& c) {
-  const std::array<Coord, 3> p{a, b, c};
-  double smallest = 180;
-  for (int k = 0; k < 3; ++k) {
-    const Coord u = p[(k + 1) % 3] - p[k], v = p[(k + 2) % 3] - p[k];
-    const double lengths = double(u.Norm()) * double(v.Norm());
-    if (!(lengths > 0)) return 0;
-    smallest = std::min(
-        smallest, std::acos(std::max(-1.0, std::min(1.0, double(u * v) / lengths))) * 180 / M_PI);
-  }
-  return smallest;
+  return vcg::math::ToDeg(double(
+      std::min({vcg::Angle(b - a, c - a), vcg::Angle(c - b, a - b), vcg::Angle(a - c, b - c)})));
 }
 
 } // namespace detail
