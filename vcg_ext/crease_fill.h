@@ -71,6 +71,68 @@ struct HeightField {
   }
 };
 
+/// One face of a read-once formula of the faces' half-spaces: the solid is
+/// `face op (the terms after it)`, the last term's face alone.
+struct SolidTerm {
+  size_t face;
+  bool intersect; ///< convex creases with the rest (intersection); false: concave (union)
+};
+
+/// The faces that meet others (`sense`, nr x nr: > 0 convex, < 0 concave, 0 apart) as one
+/// read-once formula, where the senses are mixed and the faces can be peeled off one by one,
+/// each meeting the faces left at creases of one sense (fewest meetings first: a face that
+/// meets only one other is peeled before the face it meets). Empty where the senses are all
+/// alike (the pairs say it all) or no such order exists.
+inline std::vector<SolidTerm> ReadOnceSolid(const std::vector<double>& sense, size_t nr) {
+  std::vector<char> left(nr, 0);
+  bool convex = false, concave = false;
+  for (size_t a = 0; a < nr; ++a)
+    for (size_t b = 0; b < nr; ++b) {
+      if (a == b || sense[a * nr + b] == 0) continue;
+      left[a] = 1;
+      (sense[a * nr + b] > 0 ? convex : concave) = true;
+    }
+  if (!convex || !concave) return {};
+  std::vector<SolidTerm> terms;
+  size_t remaining = size_t(std::count(left.begin(), left.end(), 1));
+  while (remaining > 1) {
+    size_t pick = nr, pick_meetings = 0;
+    bool pick_convex = false;
+    for (size_t a = 0; a < nr; ++a) {
+      if (!left[a]) continue;
+      size_t meetings = 0, convex_meetings = 0;
+      for (size_t b = 0; b < nr; ++b)
+        if (b != a && left[b] && sense[a * nr + b] != 0)
+          ++meetings, convex_meetings += sense[a * nr + b] > 0;
+      if (meetings == 0 || (convex_meetings != 0 && convex_meetings != meetings)) continue;
+      if (pick == nr || meetings < pick_meetings)
+        pick = a, pick_meetings = meetings, pick_convex = convex_meetings > 0;
+    }
+    if (pick == nr) return {};
+    terms.push_back({pick, pick_convex});
+    left[pick] = 0;
+    --remaining;
+  }
+  for (size_t a = 0; a < nr; ++a)
+    if (left[a]) terms.push_back({a, true});
+  return terms;
+}
+
+/// The formula's value at p (negative inside the solid: the faces' offsets combined by max
+/// for an intersection, min for a union) and the face whose offset it is.
+inline double SolidValue(const std::vector<SolidTerm>& terms,
+                         const std::vector<HeightField>& fields, const Eigen::Vector3d& p,
+                         size_t* deciding) {
+  size_t k = terms.size() - 1;
+  double value = fields[terms[k].face].Offset(p);
+  *deciding = terms[k].face;
+  while (k-- > 0) {
+    const double own = fields[terms[k].face].Offset(p);
+    if (terms[k].intersect ? own > value : own < value) value = own, *deciding = terms[k].face;
+  }
+  return value;
+}
+
 } // namespace detail
 
 /// The crease-carrying fill of a hole's patch (`points`, `triangles`, `is_fill` per triangle,
@@ -262,9 +324,33 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
     return out;
   }
 
+  // Where creases of both senses meet, the pairs alone may not say what the solid is: a top
+  // over a concave corner covers both walls' sides of it, not only the side both walls share.
+  // The faces' read-once formula then stands for the solid where it holds more of the known
+  // surface on its boundary than the pairs do.
+  std::vector<detail::SolidTerm> solid = detail::ReadOnceSolid(sense, nr);
+  if (!solid.empty()) {
+    const double tolerance = params.max_fit_residual * radius;
+    size_t off_formula = 0, off_pairs = 0;
+    for (size_t a = 0; a < nr; ++a)
+      for (int v : region_vertices[a]) {
+        const Eigen::Vector3d& q = points[size_t(v)];
+        size_t deciding = nr;
+        off_formula += std::abs(detail::SolidValue(solid, fields, q, &deciding)) > tolerance;
+        bool inside_pairs = true;
+        for (size_t b = 0; b < nr; ++b) {
+          const double meet = sense[a * nr + b], offset = fields[b].Offset(q);
+          if (b != a && meet != 0 && (meet > 0 ? offset > tolerance : offset < -tolerance))
+            inside_pairs = false;
+        }
+        off_pairs += !inside_pairs;
+      }
+    if (off_formula >= off_pairs) solid.clear();
+  }
   // Every fill vertex onto the solid's boundary: onto the nearest face, then, while it lies
   // outside a face that meets this one at a convex crease (inside one at a concave crease),
   // onto that one, which alternates onto the crease's line, or a corner where three meet.
+  // With the formula, onto the face that decides its value until that value is zero.
   out.points = points;
   auto nearest_face = [&](const Eigen::Vector3d& p) {
     size_t on = 0;
@@ -277,6 +363,16 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
     *p = from;
     *on = nearest_face(*p);
     *p -= fields[*on].Offset(*p) * fields[*on].n;
+    if (!solid.empty()) {
+      for (int it = 0; it < 64; ++it) {
+        size_t deciding = nr;
+        const double value = detail::SolidValue(solid, fields, *p, &deciding);
+        if (std::abs(value) <= eps) break;
+        *p -= fields[deciding].Offset(*p) * fields[deciding].n;
+        *on = deciding;
+      }
+      return p->allFinite() && (*p - from).norm() <= 2 * radius;
+    }
     for (int it = 0; it < 64; ++it) {
       size_t worst = nr;
       double violation = eps;
