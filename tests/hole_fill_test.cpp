@@ -823,33 +823,63 @@ curvature_inpaint::HoleFillResult FillWithoutSymmetry(CMeshO& m,
   return FillHoles(m, p);
 }
 
-/// The distance of each vertex of `m` from `first` on (a fill's) to the surface of `truth`,
-/// over `unit`.
-std::vector<double> FillErrors(const CMeshO& truth, const CMeshO& m, size_t first, double unit) {
-  std::vector<double> errors;
-  for (size_t v = first; v < m.vert.size(); ++v) {
-    const Eigen::Vector3d q(m.vert[v].cP()[0], m.vert[v].cP()[1], m.vert[v].cP()[2]);
+/// The distance of each of `points` to the surface of `truth`, over `unit`.
+std::vector<double> DistancesTo(const CMeshO& truth, const std::vector<Eigen::Vector3d>& points,
+                                double unit) {
+  std::vector<double> distances;
+  for (const Eigen::Vector3d& q : points) {
     double nearest = std::numeric_limits<double>::infinity();
     for (const auto& f : truth.face) {
       Eigen::Vector3d c[3];
       for (int k = 0; k < 3; ++k) c[k] = Eigen::Vector3d(f.cP(k)[0], f.cP(k)[1], f.cP(k)[2]);
       nearest = std::min(nearest, DistanceToTriangle(q, c[0], c[1], c[2]));
     }
-    errors.push_back(nearest / unit);
+    distances.push_back(nearest / unit);
   }
-  return errors;
+  return distances;
 }
 
-/// The distance of each fill vertex to the fandisk when a hole of 5 % of its diagonal around
-/// `seed_vertex` is filled with the crease prior's variation, in diagonals.
-std::vector<double> FandiskCreaseFillErrors(int seed_vertex) {
+Eigen::Vector3d ToEigen(const Point3m& p) {
+  return Eigen::Vector3d(double(p[0]), double(p[1]), double(p[2]));
+}
+
+/// The distance of each vertex of `m` from `first` on (a fill's) to the surface of `truth`,
+/// over `unit`.
+std::vector<double> FillErrors(const CMeshO& truth, const CMeshO& m, size_t first, double unit) {
+  std::vector<Eigen::Vector3d> points;
+  for (size_t v = first; v < m.vert.size(); ++v) points.push_back(ToEigen(m.vert[v].cP()));
+  return DistancesTo(truth, points, unit);
+}
+
+/// The same for the middle and the edge midpoints of each triangle of `m` with a vertex from
+/// `first` on: where the fill's surface, not only its vertices, lies.
+std::vector<double> FillSurfaceErrors(const CMeshO& truth, const CMeshO& m, size_t first,
+                                      double unit) {
+  std::vector<Eigen::Vector3d> points;
+  for (const auto& f : m.face) {
+    if (f.IsD()) continue;
+    bool is_new = false;
+    for (int k = 0; k < 3; ++k) is_new = is_new || size_t(vcg::tri::Index(m, f.cV(k))) >= first;
+    if (!is_new) continue;
+    const Eigen::Vector3d a = ToEigen(f.cP(0)), b = ToEigen(f.cP(1)), c = ToEigen(f.cP(2));
+    for (const Eigen::Vector3d& q : {Eigen::Vector3d((a + b + c) / 3), Eigen::Vector3d((a + b) / 2),
+                                     Eigen::Vector3d((b + c) / 2), Eigen::Vector3d((c + a) / 2)})
+      points.push_back(q);
+  }
+  return DistancesTo(truth, points, unit);
+}
+
+/// The distance of each fill vertex to the fandisk when a hole of `radius_frac` of its diagonal
+/// around `seed_vertex` is filled with the crease prior's variation, in diagonals.
+std::vector<double> FandiskCreaseFillErrors(int seed_vertex, double radius_frac = 0.05,
+                                            bool surface = false) {
   CMeshO truth;
   curvature_inpaint::LoadMesh(std::string(CI_SHARED_MESHES) + "/fandisk.ply", truth);
   vcg::tri::UpdateBounding<CMeshO>::Box(truth);
   const double diagonal = truth.bbox.Diag();
   CMeshO m;
   curvature_inpaint::CopyMesh(truth, m);
-  vcg_ext::PunchHole(m, m.vert[size_t(seed_vertex)].cP(), Scalarm(0.05 * diagonal));
+  vcg_ext::PunchHole(m, m.vert[size_t(seed_vertex)].cP(), Scalarm(radius_frac * diagonal));
   vcg::tri::UpdateBounding<CMeshO>::Box(m);
   const size_t scan_vertices = m.vert.size();
   HoleFillParams p = SmallImages();
@@ -861,7 +891,8 @@ std::vector<double> FandiskCreaseFillErrors(int seed_vertex) {
     ADD_FAILURE() << "no crease fill: " << (result.holes.empty() ? "" : result.holes[0].problem);
     return {};
   }
-  return FillErrors(truth, m, scan_vertices, diagonal);
+  return surface ? FillSurfaceErrors(truth, m, scan_vertices, diagonal)
+                 : FillErrors(truth, m, scan_vertices, diagonal);
 }
 
 // Two holes in the fandisk (from draws of the benchmark's rule outside its table) where the
@@ -892,6 +923,22 @@ TEST(Creases, AFillThatFoldsInOneCornerIsBackedOffThereNotAsAWhole) {
     // 0.99 and 0.88 of them within 0.1 % of the diagonal; backed off as a whole, 0.45 and 0.58.
     EXPECT_GT(on_part, 0.8);
   }
+}
+
+// A fandisk hole (development seed 9035 of the benchmark's rule) where a wall's crease with the
+// top lies wholly in the hole and the top runs on past the wall's surface beyond another
+// crease: paired from all their vertices, the two faces did not meet there, and the fill's
+// surface came back up to 0.64 % of the diagonal off the part, 293 of its 332 sample points
+// (triangle middles and edge midpoints) within 0.1 %. Paired from their vertices near the
+// hole: 0.32 %, 315 of 332.
+TEST(Creases, FacesArePairedFromHowTheyLieNearTheHole) {
+  const std::vector<double> errors = FandiskCreaseFillErrors(2067, 0.035, true);
+  ASSERT_FALSE(errors.empty());
+  EXPECT_LT(*std::max_element(errors.begin(), errors.end()), 0.0045);
+  const double near =
+      double(std::count_if(errors.begin(), errors.end(), [](double e) { return e < 0.001; })) /
+      double(errors.size());
+  EXPECT_GT(near, 0.92);
 }
 
 TEST(Creases, AHoleOnACubesEdgeAndOneOnItsCornerComeBackSharp) {

@@ -33,6 +33,11 @@ struct CreaseFillParams {
   /// A region's fit may leave this RMS, in hole radii: what is not that smooth is no face of a
   /// machined part, and its extension would not predict the hole.
   double max_fit_residual = 0.02;
+  /// Two faces with no crease edge between them beside the hole are paired from how their
+  /// vertices within this many hole radii of its centre lie: farther out, past another crease,
+  /// a face may run on beyond the other's surface (a top beside a wall that ends). Chosen on
+  /// the development holes (the whole context, 2, paired one fandisk hole of 64 less well).
+  double pairing_reach = 1.5;
   /// Rounds of umbrella smoothing of the fill's vertices over the solid's boundary (each to
   /// its neighbours' mean, then back onto the solid): they spread the vertices that the
   /// projection piles up on a crease's line. 0: none.
@@ -301,8 +306,8 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
   // Two faces whose crease lies wholly inside the hole (a thin plate's corner edge, where the
   // hole took the edge from the top face to the bottom one) have no crease edge in the context;
   // left unpaired, each face's extension runs on through the other. How they meet shows in
-  // their vertices: of a convex edge, each face lies below the other's surface; of a concave
-  // one, above. Faces with vertices on both sides of each other do not meet here.
+  // their vertices near the hole: of a convex edge, each face lies below the other's surface;
+  // of a concave one, above. Faces with vertices on both sides of each other do not meet here.
   for (size_t a = 0; a < nr; ++a)
     for (size_t b = a + 1; b < nr; ++b) {
       if (sense[a * nr + b] != 0 || std::abs(fields[a].n.dot(fields[b].n)) > cos_crease) continue;
@@ -310,6 +315,7 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
       double lowest = 0, highest = 0;
       for (const auto& pair : {std::make_pair(a, b), std::make_pair(b, a)})
         for (int v : region_vertices[pair.first]) {
+          if ((points[size_t(v)] - centre).norm() > params.pairing_reach * radius) continue;
           const double offset = fields[pair.second].Offset(points[size_t(v)]);
           lowest = std::min(lowest, offset), highest = std::max(highest, offset);
         }
