@@ -2,13 +2,14 @@
 // the hole is split at its sharp edges into smooth regions (a machined part's faces), each
 // region is fitted with a quadric height field, and every fill vertex is moved onto the
 // solid those surfaces bound (across a convex crease the intersection of the two faces'
-// solids, across a concave one their union), the fill vertex nearest a corner where three of
-// them meet onto it, and the fill vertices nearest a crease onto its line, so that fill edges
-// run along it. Where two regions' surfaces meet, the crease comes back straight and sharp as
-// the extension of both, even where the hole took all of it (a plate's corner edge); where
-// three meet, a corner. Where one face surrounds the hole and a crease passes beside it (or,
-// when asked, no crease at all), the fill is that face extended. A smooth cap (Liepa, CGAL,
-// MeshLab) rounds them away.
+// solids, across a concave one their union; where both senses meet, one formula of all of
+// them, a top over a concave corner being the top intersected with the walls' union), the
+// fill vertex nearest a corner where three of them meet onto it, and the fill vertices
+// nearest a crease onto its line, so that fill edges run along it. Where two regions' surfaces
+// meet, the crease comes back straight and sharp as the extension of both, even where the hole took
+// all of it (a plate's corner edge); where three meet, a corner. Where one face surrounds the hole
+// and a crease passes beside it (or, when asked, no crease at all), the fill is that face extended.
+// A smooth cap (Liepa, CGAL, MeshLab) rounds them away.
 #pragma once
 
 #include "fill_extent.h"
