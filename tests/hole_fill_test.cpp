@@ -1134,10 +1134,11 @@ TEST(Creases, AHoleWhereConvexAndConcaveCreasesMeetComesBackOnTheSolid) {
 // The step through the whole box (every height above the middle scaled into the step's, so the
 // side faces keep their planes), a hole where the slope meets the side face y = 1: the side
 // face's outline is not convex, and at one of the hole's corners the concave crease at the
-// slope's foot runs into it. Pair by pair, the fill's vertices were backed off where its
-// triangles folded, up to 0.075 inside the box; as one solid, every fill vertex is on it.
-// (Fill triangles still cut across the slope's crease with the side face, up to 0.035 deep:
-// no fill vertex lies on that line for the flips to lay an edge along.)
+// slope's foot runs into it, and no crease edge pairs the side face with the slope. Pair by
+// pair, the fill's vertices were backed off where its triangles folded, up to 0.075 inside the
+// box. As one solid, every fill vertex is on it; with the side face and the slope paired as
+// the solid's formula meets them, so is every fill triangle (0.035 deep across their crease
+// before: no fill vertex lay on its line).
 TEST(Creases, AHoleWhereAStepMeetsASideFaceComesBackOnTheSolid) {
   CMeshO truth;
   MakeCube(truth, 24);
@@ -1152,6 +1153,8 @@ TEST(Creases, AHoleWhereAStepMeetsASideFaceComesBackOnTheSolid) {
   const std::vector<double> errors = FillErrors(truth, m, scan_vertices, 1.0);
   ASSERT_FALSE(errors.empty());
   EXPECT_LT(*std::max_element(errors.begin(), errors.end()), 0.005);
+  const std::vector<double> surface = FillSurfaceErrors(truth, m, scan_vertices, 1.0);
+  EXPECT_LT(*std::max_element(surface.begin(), surface.end()), 0.005);
 }
 
 // A hole in a cylinder's side a ring below the edge where the flat end meets it: one face all

@@ -354,6 +354,16 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
       }
     if (off_formula >= off_pairs) solid.clear();
   }
+  // The formula also says how two faces that no crease edge pairs meet: as the earlier of them
+  // in its order meets every face after it. Where they are not parallel, their crease's line
+  // then runs along fill edges too, as a paired crease's does below.
+  for (size_t i = 0; i < solid.size(); ++i)
+    for (size_t j = i + 1; j < solid.size(); ++j) {
+      const size_t a = solid[i].face, b = solid[j].face;
+      if (sense[a * nr + b] != 0 || !(std::abs(fields[a].n.dot(fields[b].n)) <= cos_crease))
+        continue;
+      sense[a * nr + b] = sense[b * nr + a] = solid[i].intersect ? eps : -eps;
+    }
   // Every fill vertex onto the solid's boundary: onto the nearest face, then, while it lies
   // outside a face that meets this one at a convex crease (inside one at a concave crease),
   // onto that one, which alternates onto the crease's line, or a corner where three meet.
