@@ -1056,6 +1056,12 @@ TEST(Creases, AHoleThatTakesAPlatesWholeCornerEdgeBringsItBack) {
         << "at z = " << z;
 }
 
+/// The height of the step below: 1 up to x = 0, down a 45-degree slope to 0.5 at x = 0.5, and
+/// on at 0.5.
+double StepHeight(double x) {
+  return 1 - std::min(0.5, std::max(0.0, x));
+}
+
 // A step: the cube's top runs down a 45-degree slope from a convex crease (x = 0) to a
 // concave one (x = 0.5) and on at half its height. A hole over the slope takes both creases;
 // the faces' solid must be their intersection at the convex crease and their union at the
@@ -1063,15 +1069,15 @@ TEST(Creases, AHoleThatTakesAPlatesWholeCornerEdgeBringsItBack) {
 TEST(Creases, AHoleOverAStepBringsBackItsConvexAndConcaveCreases) {
   CMeshO m;
   MakeCube(m, 24);
-  auto step = [](double x) { return 1 - std::min(0.5, std::max(0.0, x)); };
   for (auto& v : m.vert)
-    if (v.cP()[2] == 1) v.P()[2] = Scalarm(step(double(v.cP()[0])));
+    if (v.cP()[2] == 1) v.P()[2] = Scalarm(StepHeight(double(v.cP()[0])));
   vcg_ext::PunchHole(m, Point3m(0.25f, 0, 0.75f), Scalarm(0.45));
   const size_t scan_vertices = m.vert.size();
   ASSERT_TRUE(FillsOneHoleWithCreases(m));
   double worst = 0;
   for (size_t v = scan_vertices; v < m.vert.size(); ++v)
-    worst = std::max(worst, std::abs(double(m.vert[v].cP()[2]) - step(double(m.vert[v].cP()[0]))));
+    worst = std::max(worst,
+                     std::abs(double(m.vert[v].cP()[2]) - StepHeight(double(m.vert[v].cP()[0]))));
   EXPECT_LT(worst, 0.02) << "a fill vertex off the step (height)";
   vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
   const Scalarm off = Scalarm(2.0 / 24 / 3);
@@ -1142,9 +1148,8 @@ TEST(Creases, AHoleWhereConvexAndConcaveCreasesMeetComesBackOnTheSolid) {
 TEST(Creases, AHoleWhereAStepMeetsASideFaceComesBackOnTheSolid) {
   CMeshO truth;
   MakeCube(truth, 24);
-  auto step = [](double x) { return 1 - std::min(0.5, std::max(0.0, x)); };
   for (auto& v : truth.vert)
-    if (v.cP()[2] > 0) v.P()[2] = Scalarm(double(v.cP()[2]) * step(double(v.cP()[0])));
+    if (v.cP()[2] > 0) v.P()[2] = Scalarm(double(v.cP()[2]) * StepHeight(double(v.cP()[0])));
   CMeshO m;
   curvature_inpaint::CopyMesh(truth, m);
   vcg_ext::PunchHole(m, Point3m(0.25f, 1, 0.75f), Scalarm(0.4));
