@@ -505,6 +505,28 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
         out.points[nearest] = p;
         on_line[nearest] = 1;
       }
+  // The point of the line where faces fa and fb meet nearest vertex v (Newton steps on the two
+  // offsets); false where they are parallel.
+  auto line_point = [&](size_t v, size_t fa, size_t fb, Eigen::Vector3d* p) {
+    *p = out.points[v];
+    for (int it = 0; it < 8; ++it) {
+      Eigen::Matrix<double, 2, 3> n;
+      n.row(0) = fields[fa].n.transpose(), n.row(1) = fields[fb].n.transpose();
+      const Eigen::Vector2d r(fields[fa].Offset(*p), fields[fb].Offset(*p));
+      const Eigen::Matrix2d gram = n * n.transpose();
+      if (std::abs(gram.determinant()) < 1e-12) return false;
+      *p -= n.transpose() * gram.inverse() * r;
+      if (r.norm() < eps) break;
+    }
+    return p->allFinite();
+  };
+  // Vertex v onto that line, where that keeps its triangles facing.
+  auto onto_line = [&](size_t v, size_t fa, size_t fb) {
+    Eigen::Vector3d p;
+    if (!line_point(v, fa, fb, &p) || !keeps_triangles_facing(v, p)) return;
+    out.points[v] = p;
+    on_line[v] = 1;
+  };
   // A border vertex is on the face it lies nearest to.
   auto face_of_vertex = [&](size_t v) { return free[v] ? face_of[v] : nearest_face(points[v]); };
   for (size_t t = 0; t < nt; ++t) {
@@ -515,25 +537,32 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
       if (on_line[a] || on_line[b]) continue;
       if (!free[a] && !free[b]) continue;
       const size_t fa = face_of_vertex(a), fb = face_of_vertex(b);
-      if (fa == fb || sense[fa * nr + fb] == 0) continue;
-      const size_t moved = !free[b] || (free[a] && std::abs(fields[fb].Offset(out.points[a])) <=
-                                                       std::abs(fields[fa].Offset(out.points[b])))
-                               ? a
-                               : b;
-      Eigen::Vector3d p = out.points[moved];
-      // The nearest point of both faces' surfaces: Newton steps on the two offsets.
-      for (int it = 0; it < 8; ++it) {
-        Eigen::Matrix<double, 2, 3> n;
-        n.row(0) = fields[fa].n.transpose(), n.row(1) = fields[fb].n.transpose();
-        const Eigen::Vector2d r(fields[fa].Offset(p), fields[fb].Offset(p));
-        const Eigen::Matrix2d gram = n * n.transpose();
-        if (std::abs(gram.determinant()) < 1e-12) break; // parallel faces: no line
-        p -= n.transpose() * gram.inverse() * r;
-        if (r.norm() < eps) break;
+      if (fa == fb) continue;
+      if (sense[fa * nr + fb] != 0) {
+        const bool a_nearer =
+            free[a] && (!free[b] || std::abs(fields[fb].Offset(out.points[a])) <=
+                                        std::abs(fields[fa].Offset(out.points[b])));
+        a_nearer ? onto_line(a, fa, fb) : onto_line(b, fa, fb);
+        continue;
       }
-      if (!p.allFinite() || !keeps_triangles_facing(moved, p)) continue;
-      out.points[moved] = p;
-      on_line[moved] = 1;
+      // Two faces that do not meet, both meeting a third: a side face narrower than the
+      // fill's edges between a thin part's top and bottom, on which few fill vertices land.
+      // The edge across it cuts it off as a groove; each end goes onto its face's crease with
+      // the side face (of several, the one whose creases lie nearest the ends), so the edge
+      // runs over it.
+      size_t side = nr;
+      double nearest = std::numeric_limits<double>::infinity();
+      for (size_t c = 0; c < nr; ++c) {
+        if (c == fa || c == fb || sense[fa * nr + c] == 0 || sense[fb * nr + c] == 0) continue;
+        Eigen::Vector3d pa, pb;
+        if (!line_point(a, fa, c, &pa) || !line_point(b, fb, c, &pb)) continue;
+        const double d = (free[a] ? (pa - out.points[a]).norm() : 0.0) +
+                         (free[b] ? (pb - out.points[b]).norm() : 0.0);
+        if (d < nearest) nearest = d, side = c;
+      }
+      if (side == nr) continue;
+      if (free[a]) onto_line(a, fa, side);
+      if (free[b]) onto_line(b, fb, side);
     }
   }
   // A sliver of the coarse fill (two border vertices and a free one that stood a hair off the
