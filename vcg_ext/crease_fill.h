@@ -53,8 +53,10 @@ struct CreaseFill {
   std::vector<Eigen::Vector3d> points; ///< the whole patch, fill vertices moved
   int regions = 0;                     ///< smooth regions meeting at the hole
   int crease_edges = 0; ///< sharp edges of the context; 0 where the fill is one face extended
-  int convex_pairs = 0, concave_pairs = 0; ///< of faces that meet at a crease
-  std::string problem;                     ///< why there is no fill; empty if there is one
+  /// Of faces that meet at a crease: paired by its edges beside the hole, by how they lie
+  /// near it, or by the solid's formula.
+  int convex_pairs = 0, concave_pairs = 0;
+  std::string problem; ///< why there is no fill; empty if there is one
 };
 
 namespace detail {
@@ -363,6 +365,7 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
       if (sense[a * nr + b] != 0 || !(std::abs(fields[a].n.dot(fields[b].n)) <= cos_crease))
         continue;
       sense[a * nr + b] = sense[b * nr + a] = solid[i].intersect ? eps : -eps;
+      ++(solid[i].intersect ? out.convex_pairs : out.concave_pairs);
     }
   // Every fill vertex onto the solid's boundary: onto the nearest face, then, while it lies
   // outside a face that meets this one at a convex crease (inside one at a concave crease),
