@@ -523,12 +523,15 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
     }
     return p->allFinite();
   };
-  // Vertex v onto that line, where that keeps its triangles facing.
-  auto onto_line = [&](size_t v, size_t fa, size_t fb) {
-    Eigen::Vector3d p;
-    if (!line_point(v, fa, fb, &p) || !keeps_triangles_facing(v, p)) return;
+  // Vertex v to p on a crease's line, where that keeps its triangles facing.
+  auto place_on_line = [&](size_t v, const Eigen::Vector3d& p) {
+    if (!keeps_triangles_facing(v, p)) return;
     out.points[v] = p;
     on_line[v] = 1;
+  };
+  auto onto_line = [&](size_t v, size_t fa, size_t fb) {
+    Eigen::Vector3d p;
+    if (line_point(v, fa, fb, &p)) place_on_line(v, p);
   };
   // A border vertex is on the face it lies nearest to.
   auto face_of_vertex = [&](size_t v) { return free[v] ? face_of[v] : nearest_face(points[v]); };
@@ -553,19 +556,19 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
       // The edge across it cuts it off as a groove; each end goes onto its face's crease with
       // the side face (of several, the one whose creases lie nearest the ends), so the edge
       // runs over it.
-      size_t side = nr;
       double nearest = std::numeric_limits<double>::infinity();
+      Eigen::Vector3d to_a, to_b;
       for (size_t c = 0; c < nr; ++c) {
         if (c == fa || c == fb || sense[fa * nr + c] == 0 || sense[fb * nr + c] == 0) continue;
         Eigen::Vector3d pa, pb;
         if (!line_point(a, fa, c, &pa) || !line_point(b, fb, c, &pb)) continue;
         const double d = (free[a] ? (pa - out.points[a]).norm() : 0.0) +
                          (free[b] ? (pb - out.points[b]).norm() : 0.0);
-        if (d < nearest) nearest = d, side = c;
+        if (d < nearest) nearest = d, to_a = pa, to_b = pb;
       }
-      if (side == nr) continue;
-      if (free[a]) onto_line(a, fa, side);
-      if (free[b]) onto_line(b, fb, side);
+      if (!std::isfinite(nearest)) continue;
+      if (free[a]) place_on_line(a, to_a);
+      if (free[b]) place_on_line(b, to_b);
     }
   }
   // A sliver of the coarse fill (two border vertices and a free one that stood a hair off the
