@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -1430,6 +1431,20 @@ std::vector<std::string> DescribeHoleFill(const HoleFillResult& result) {
   return lines;
 }
 
+namespace {
+
+/// A number as JSON has it: JSON has no infinity and no NaN, so a value that is not finite is
+/// written as null, and the report stays readable by any JSON parser.
+struct JsonNumber {
+  double value;
+};
+
+std::ostream& operator<<(std::ostream& o, JsonNumber n) {
+  return std::isfinite(n.value) ? o << n.value : o << "null";
+}
+
+} // namespace
+
 std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParams& params) {
   std::ostringstream o;
   o.precision(6);
@@ -1440,17 +1455,19 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
       o << "[";
       for (size_t k = 0; k < list.size(); ++k) {
         const auto& p = list[k];
-        o << (k ? ", " : "") << "{\"normal\": [" << p.normal.x() << ", " << p.normal.y() << ", "
-          << p.normal.z() << "], \"offset\": " << p.offset << ", \"coverage\": " << p.coverage
-          << ", \"residual\": " << p.residual << "}";
+        o << (k ? ", " : "") << "{\"normal\": [" << JsonNumber{p.normal.x()} << ", "
+          << JsonNumber{p.normal.y()} << ", " << JsonNumber{p.normal.z()}
+          << "], \"offset\": " << JsonNumber{p.offset}
+          << ", \"coverage\": " << JsonNumber{p.coverage}
+          << ", \"residual\": " << JsonNumber{p.residual} << "}";
       }
       o << "]";
     };
-    o << "  \"symmetry\": {\"seconds\": " << result.symmetry_s << ", \"planes\": ";
+    o << "  \"symmetry\": {\"seconds\": " << JsonNumber{result.symmetry_s} << ", \"planes\": ";
     planes(result.symmetry);
     o << ", \"partial_planes\": ";
     planes(result.symmetry_partial);
-    o << ", \"best_coverage\": " << result.symmetry_best.coverage << "},\n";
+    o << ", \"best_coverage\": " << JsonNumber{result.symmetry_best.coverage} << "},\n";
   }
   // The notes are the pipeline's own sentences: no control characters, only quotes to escape.
   auto quoted = [](std::string t) {
@@ -1464,7 +1481,7 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
     o << (k ? ",\n" : "\n") << "    {\"hole\": " << k + 1
       << ", \"boundary_edges\": " << r.boundary_edges << ", \"new_vertices\": " << r.new_vertices
       << ", \"scores\": [";
-    for (size_t j = 0; j < r.scores.size(); ++j) o << (j ? ", " : "") << r.scores[j];
+    for (size_t j = 0; j < r.scores.size(); ++j) o << (j ? ", " : "") << JsonNumber{r.scores[j]};
     o << "], \"kinds\": [";
     for (size_t j = 0; j < r.kinds.size(); ++j) o << (j ? ", " : "") << '"' << r.kinds[j] << '"';
     o << "]";
@@ -1473,13 +1490,13 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
         << ", \"at_mirror_place\": " << r.mirror_fake_holes << ", \"candidates\": [";
       for (size_t c = 0; c < r.candidates.size(); ++c)
         o << (c ? ", " : "") << "{\"name\": \"" << r.candidates[c]
-          << "\", \"error\": " << r.validation_errors[c]
-          << ", \"detail_ratio\": " << r.validation_detail[c] << "}";
+          << "\", \"error\": " << JsonNumber{r.validation_errors[c]}
+          << ", \"detail_ratio\": " << JsonNumber{r.validation_detail[c]} << "}";
       o << "], \"per_fake_hole\": [";
       for (size_t f = 0; f < r.fake_hole_errors.size(); ++f) {
         o << (f ? ", [" : "[");
         for (size_t c = 0; c < r.fake_hole_errors[f].size(); ++c)
-          o << (c ? ", " : "") << r.fake_hole_errors[f][c];
+          o << (c ? ", " : "") << JsonNumber{r.fake_hole_errors[f][c]};
         o << "]";
       }
       o << "], \"choice\": \"" << r.candidates[size_t(r.choice)] << "\"";
@@ -1492,13 +1509,15 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
     if (!r.kind.empty()) o << ", \"kind\": \"" << r.kind << "\"";
     o << ", \"crease_flips\": " << r.crease_flips;
     o << ", \"iterations\": " << r.iterations << ", \"backoffs\": " << r.backoffs
-      << ", \"max_move\": " << r.max_move << ", \"seconds\": {\"coarse\": " << r.coarse_s
-      << ", \"images\": " << r.images_s << ", \"inpaint\": " << r.inpaint_s
-      << ", \"deform\": " << r.deform_s << "}";
+      << ", \"max_move\": " << JsonNumber{r.max_move}
+      << ", \"seconds\": {\"coarse\": " << JsonNumber{r.coarse_s}
+      << ", \"images\": " << JsonNumber{r.images_s} << ", \"inpaint\": " << JsonNumber{r.inpaint_s}
+      << ", \"deform\": " << JsonNumber{r.deform_s} << "}";
     if (params.measure_detail)
-      o << ", \"curvature_spread\": {\"truth\": " << r.truth_spread.truth
-        << ", \"truth_image\": " << r.truth_spread.image << ", \"target\": " << r.target_spread
-        << ", \"result\": " << r.result_spread << "}";
+      o << ", \"curvature_spread\": {\"truth\": " << JsonNumber{r.truth_spread.truth}
+        << ", \"truth_image\": " << JsonNumber{r.truth_spread.image}
+        << ", \"target\": " << JsonNumber{r.target_spread}
+        << ", \"result\": " << JsonNumber{r.result_spread} << "}";
     if (!r.symmetry_note.empty()) o << ", \"no_symmetry\": " << quoted(r.symmetry_note);
     if (!r.crease_note.empty()) o << ", \"no_creases\": " << quoted(r.crease_note);
     if (!r.problem.empty()) o << ", \"problem\": " << quoted(r.problem);

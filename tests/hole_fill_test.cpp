@@ -15,6 +15,10 @@
 
 #include <gtest/gtest.h>
 
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -482,6 +486,36 @@ TEST(FakeHoles, ASmallClosedPartFallsBackToTheVariationScoreAndSaysSo) {
   EXPECT_GE(r.pick, 1);
   const auto census = curvature_inpaint::CountHoles(m);
   EXPECT_TRUE(census.loop_edges.empty());
+}
+
+// JSON has no infinity and no NaN: a value that is not finite (a candidate whose fill could
+// not be scored, a score of a blank image) is written as null, so the report still parses.
+TEST(Report, NumbersThatAreNotFiniteAreWrittenAsNull) {
+  curvature_inpaint::HoleFillResult result;
+  curvature_inpaint::HoleFillReport r;
+  r.scores = {std::numeric_limits<double>::quiet_NaN(), 0.25};
+  r.kinds = {"continuation", "continuation"};
+  r.pick = 2;
+  r.candidates = {"coarse", "tri-laplacian"};
+  r.validation_errors = {0.5, std::numeric_limits<double>::infinity()};
+  r.validation_detail = {-1, -1};
+  r.fake_hole_errors = {{0.5, -std::numeric_limits<double>::infinity()}};
+  r.fake_holes = 1;
+  r.choice = 0;
+  r.max_move = std::numeric_limits<double>::quiet_NaN();
+  result.holes.push_back(r);
+  const std::string json = curvature_inpaint::HoleFillReportJson(result, SmallImages());
+  QJsonParseError error;
+  const QJsonDocument doc = QJsonDocument::fromJson(QByteArray::fromStdString(json), &error);
+  ASSERT_EQ(error.error, QJsonParseError::NoError) << error.errorString().toStdString() << json;
+  const QJsonObject hole = doc.object()["holes"].toArray()[0].toObject();
+  EXPECT_TRUE(hole["scores"].toArray()[0].isNull());
+  EXPECT_DOUBLE_EQ(hole["scores"].toArray()[1].toDouble(), 0.25);
+  const QJsonObject validation = hole["validation"].toObject();
+  EXPECT_TRUE(validation["candidates"].toArray()[1].toObject()["error"].isNull());
+  EXPECT_DOUBLE_EQ(validation["candidates"].toArray()[0].toObject()["error"].toDouble(), 0.5);
+  EXPECT_TRUE(validation["per_fake_hole"].toArray()[0].toArray()[1].isNull());
+  EXPECT_TRUE(hole["max_move"].isNull());
 }
 
 TEST(FakeHoles, TheValidatedChoiceIsTheSameForAnyThreadCount) {
