@@ -34,25 +34,10 @@ def applied(log, name, seconds):
     return wait_text(log, ("Applied filter: " + name, "Applied filter " + name), seconds)
 
 
-def start_filter(session, main, query):
-    """MeshLab's filter search (Ctrl+F): the first match is the filter; Enter starts it. The
-    search ranks filters by how many of the query's words their name and help hold, and
-    filters with as many in an arbitrary order: `query` carries a word of the filter's own help
-    that the product's other filters lack."""
-    session.focus(main)
-    session.x("key", "ctrl+f")
-    time.sleep(1)
-    session.x("type", "--delay", "30", query)
-    time.sleep(1)
-    session.x("key", "Down")
-    session.x("key", "Return")
-
-
 def coarse_hole_fill(session, main, log, shots):
     name = "Curvature Inpaint: Coarse Hole Fill"
-    start_filter(session, main, "Curvature Inpaint Coarse Hole Fill Liepa")
     # Since 2021.05 a filter's parameters are in a floating dock, a window of its own.
-    dock = session.wait_window("^" + name + "$", 60)
+    dock = session.open_filter(main, "Curvature Inpaint Coarse Hole Fill Liepa", "^" + name + "$")
     if dock is None:
         raise Failure("the dialog of " + name + " did not appear")
     time.sleep(2)
@@ -68,8 +53,7 @@ HOLE_FILL = "Curvature Inpaint Hole Fill"
 
 def open_product_dialog(session, main):
     """The product's own dialog, focused; MeshLab shows none of its own for this filter."""
-    start_filter(session, main, HOLE_FILL + " variations")
-    dialog = session.wait_window("^" + HOLE_FILL, 60)
+    dialog = session.open_filter(main, HOLE_FILL + " variations", "^" + HOLE_FILL)
     if dialog is None:
         raise Failure("the product's dialog did not appear")
     time.sleep(1)

@@ -66,6 +66,29 @@ class XSession:
                 return None
             time.sleep(0.5)
 
+    def open_filter(self, main, query, title, seconds=60, attempts=3):
+        """Starts a filter with MeshLab's filter search (Ctrl+F in `main`, the first match,
+        Enter) and returns the id of the window whose name matches `title` that it opens, or
+        None. The search ranks filters by how many of the query's words their name and help
+        hold, and filters with as many in an arbitrary order: `query` carries a word of the
+        filter's own help that the product's other filters lack. Keys sent while a loaded
+        machine keeps MeshLab busy can be lost: where no window comes within `seconds`, Escape
+        closes what the search left open and it is typed again, `attempts` times in all."""
+        for _ in range(attempts):
+            self.focus(main)
+            self.x("key", "ctrl+f")
+            time.sleep(1)
+            self.x("type", "--delay", "30", query)
+            time.sleep(1)
+            self.x("key", "Down")
+            self.x("key", "Return")
+            window = self.wait_window(title, seconds)
+            if window is not None:
+                return window
+            self.x("key", "Escape")
+            time.sleep(1)
+        return None
+
     def size(self, window):
         """(width, height) of a window."""
         geometry = self.x("getwindowgeometry", window).stdout.split("Geometry:")[1].split()[0]
