@@ -613,10 +613,11 @@ void StandInForSurfacePriors(const std::vector<ValidationCandidate>& candidates,
         t.errors[c] = t.errors[fallback], t.fills[c] = t.fills[fallback];
 }
 
-/// The candidate with the lowest mean error; among those within 2 % of it, one whose detail
-/// ratio on the fake holes lies in 0.7-1.3 (as much detail as the cut surface had), the
-/// closest of those. The ratios cost curvature fits, so they are measured only where they
-/// break a tie; `detail` gets them (-1 elsewhere).
+/// The candidate with the lowest mean error; among those within `tie` of it (a fraction), one
+/// whose detail ratio on the fake holes lies in 0.7-1.3 (as much detail as the cut surface
+/// had), the closest of those: four fake holes cannot tell a few per cent apart, the detail
+/// ratio says which fill looks like the surface around it. The ratios cost curvature fits, so
+/// they are measured only where they break a tie; `detail` gets them (-1 elsewhere).
 size_t ChooseCandidate(const std::vector<double>& error, const std::vector<FakeHoleTrial>& trials,
                        const HoleFillParams& params, std::vector<double>& detail) {
   const size_t n = error.size();
@@ -624,7 +625,7 @@ size_t ChooseCandidate(const std::vector<double>& error, const std::vector<FakeH
   const size_t best = size_t(std::min_element(error.begin(), error.end()) - error.begin());
   std::vector<size_t> tied;
   for (size_t c = 0; c < n; ++c)
-    if (error[c] <= 1.02 * error[best]) tied.push_back(c);
+    if (error[c] <= (1 + params.validation.tie) * error[best]) tied.push_back(c);
   if (tied.size() < 2) return best;
   const double used = double(trials.size());
   for (size_t c : tied) detail[c] = 0;
@@ -1199,6 +1200,7 @@ void CheckHoleFillParams(const HoleFillParams& p) {
   RequireRange(p.validation.image_size, 16, 8192, "the fake holes' image size");
   RequireRange(p.validation.max_flatter, 0, 1e6,
                "how much flatter a hole may be than its fake holes");
+  RequireRange(p.validation.tie, 0, 1, "the validation's tie band");
   for (double a : p.validation.details) RequireRange(a, 0, 10, "a validated detail amplitude");
   RequireRange(p.symmetry.detection.tolerance, 1e-6, 1, "the symmetry tolerance");
   RequireRange(p.symmetry.detection.min_coverage, 0, 1, "the symmetry's minimum coverage");
@@ -1487,7 +1489,8 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
     o << "]";
     if (!r.candidates.empty()) {
       o << ", \"validation\": {\"fake_holes\": " << r.fake_holes
-        << ", \"at_mirror_place\": " << r.mirror_fake_holes << ", \"candidates\": [";
+        << ", \"at_mirror_place\": " << r.mirror_fake_holes
+        << ", \"tie\": " << JsonNumber{params.validation.tie} << ", \"candidates\": [";
       for (size_t c = 0; c < r.candidates.size(); ++c)
         o << (c ? ", " : "") << "{\"name\": \"" << r.candidates[c]
           << "\", \"error\": " << JsonNumber{r.validation_errors[c]}
