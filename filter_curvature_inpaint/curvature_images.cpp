@@ -1,5 +1,6 @@
 #include "curvature_images.h"
 
+#include "json_text.h"
 #include "pipeline.h"
 
 #include <vcg_ext/curvature_colormap.h>
@@ -255,8 +256,8 @@ void WriteHoleImages(const std::string& dir, const CurvatureImagesResult& result
     for (size_t v = 0; v < hi.patch.vertices.size(); ++v)
       json << (v ? ",\n    " : "\n    ") << "{\"index\": " << hi.patch.vertices[v]
            << ", \"u\": " << hi.uv.uv[v].x() << ", \"v\": " << hi.uv.uv[v].y()
-           << ", \"curvature\": " << (std::isfinite(hi.curvature[v]) ? hi.curvature[v] : 0.0)
-           << ", \"value\": " << hi.value[v] << "}";
+           << ", \"curvature\": " << JsonNumber{hi.curvature[v]} << ", \"value\": " << hi.value[v]
+           << "}";
     json << "\n  ]\n}\n";
     if (!json) throw std::runtime_error("cannot write " + base + ".json");
   }

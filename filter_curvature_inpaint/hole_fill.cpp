@@ -3,6 +3,7 @@
 #include "fake_holes.h"
 #include "inpaint/curvature_reading.h"
 #include "inpaint/server_pool.h"
+#include "json_text.h"
 #include "pipeline.h"
 
 #include <vcg_ext/crease_flips.h>
@@ -1433,25 +1434,11 @@ std::vector<std::string> DescribeHoleFill(const HoleFillResult& result) {
   return lines;
 }
 
-namespace {
-
-/// A number as JSON has it: JSON has no infinity and no NaN, so a value that is not finite is
-/// written as null, and the report stays readable by any JSON parser.
-struct JsonNumber {
-  double value;
-};
-
-std::ostream& operator<<(std::ostream& o, JsonNumber n) {
-  return std::isfinite(n.value) ? o << n.value : o << "null";
-}
-
-} // namespace
-
 std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParams& params) {
   std::ostringstream o;
   o.precision(6);
-  o << "{\n  \"backend\": \"" << params.inpaint.backend << "\",\n  \"mode\": \"" << params.mode
-    << "\",\n";
+  o << "{\n  \"backend\": " << JsonQuoted(params.inpaint.backend)
+    << ",\n  \"mode\": " << JsonQuoted(params.mode) << ",\n";
   if (result.symmetry_detected) {
     auto planes = [&o](const std::vector<vcg_ext::SymmetryPlane>& list) {
       o << "[";
@@ -1471,12 +1458,6 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
     planes(result.symmetry_partial);
     o << ", \"best_coverage\": " << JsonNumber{result.symmetry_best.coverage} << "},\n";
   }
-  // The notes are the pipeline's own sentences: no control characters, only quotes to escape.
-  auto quoted = [](std::string t) {
-    for (auto& c : t)
-      if (c == '"' || c == '\\') c = '\'';
-    return '"' + t + '"';
-  };
   o << "  \"holes\": [";
   for (size_t k = 0; k < result.holes.size(); ++k) {
     const auto& r = result.holes[k];
@@ -1485,15 +1466,15 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
       << ", \"scores\": [";
     for (size_t j = 0; j < r.scores.size(); ++j) o << (j ? ", " : "") << JsonNumber{r.scores[j]};
     o << "], \"kinds\": [";
-    for (size_t j = 0; j < r.kinds.size(); ++j) o << (j ? ", " : "") << '"' << r.kinds[j] << '"';
+    for (size_t j = 0; j < r.kinds.size(); ++j) o << (j ? ", " : "") << JsonQuoted(r.kinds[j]);
     o << "]";
     if (!r.candidates.empty()) {
       o << ", \"validation\": {\"fake_holes\": " << r.fake_holes
         << ", \"at_mirror_place\": " << r.mirror_fake_holes
         << ", \"tie\": " << JsonNumber{params.validation.tie} << ", \"candidates\": [";
       for (size_t c = 0; c < r.candidates.size(); ++c)
-        o << (c ? ", " : "") << "{\"name\": \"" << r.candidates[c]
-          << "\", \"error\": " << JsonNumber{r.validation_errors[c]}
+        o << (c ? ", " : "") << "{\"name\": " << JsonQuoted(r.candidates[c])
+          << ", \"error\": " << JsonNumber{r.validation_errors[c]}
           << ", \"detail_ratio\": " << JsonNumber{r.validation_detail[c]} << "}";
       o << "], \"per_fake_hole\": [";
       for (size_t f = 0; f < r.fake_hole_errors.size(); ++f) {
@@ -1502,14 +1483,14 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
           o << (c ? ", " : "") << JsonNumber{r.fake_hole_errors[f][c]};
         o << "]";
       }
-      o << "], \"choice\": \"" << r.candidates[size_t(r.choice)] << "\"";
-      if (!r.validation_note.empty()) o << ", \"note\": " << quoted(r.validation_note);
+      o << "], \"choice\": " << JsonQuoted(r.candidates[size_t(r.choice)]);
+      if (!r.validation_note.empty()) o << ", \"note\": " << JsonQuoted(r.validation_note);
       o << "}";
     } else if (!r.validation_note.empty()) {
-      o << ", \"validation\": {\"note\": " << quoted(r.validation_note) << "}";
+      o << ", \"validation\": {\"note\": " << JsonQuoted(r.validation_note) << "}";
     }
     o << ", \"pick\": " << r.pick;
-    if (!r.kind.empty()) o << ", \"kind\": \"" << r.kind << "\"";
+    if (!r.kind.empty()) o << ", \"kind\": " << JsonQuoted(r.kind);
     o << ", \"crease_flips\": " << r.crease_flips;
     o << ", \"iterations\": " << r.iterations << ", \"backoffs\": " << r.backoffs
       << ", \"max_move\": " << JsonNumber{r.max_move}
@@ -1521,9 +1502,9 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
         << ", \"truth_image\": " << JsonNumber{r.truth_spread.image}
         << ", \"target\": " << JsonNumber{r.target_spread}
         << ", \"result\": " << JsonNumber{r.result_spread} << "}";
-    if (!r.symmetry_note.empty()) o << ", \"no_symmetry\": " << quoted(r.symmetry_note);
-    if (!r.crease_note.empty()) o << ", \"no_creases\": " << quoted(r.crease_note);
-    if (!r.problem.empty()) o << ", \"problem\": " << quoted(r.problem);
+    if (!r.symmetry_note.empty()) o << ", \"no_symmetry\": " << JsonQuoted(r.symmetry_note);
+    if (!r.crease_note.empty()) o << ", \"no_creases\": " << JsonQuoted(r.crease_note);
+    if (!r.problem.empty()) o << ", \"problem\": " << JsonQuoted(r.problem);
     o << "}";
   }
   o << "\n  ]\n}\n";

@@ -488,6 +488,15 @@ TEST(FakeHoles, ASmallClosedPartFallsBackToTheVariationScoreAndSaysSo) {
   EXPECT_TRUE(census.loop_edges.empty());
 }
 
+// The report's first hole as a JSON parser reads it (an empty object where it does not parse).
+QJsonObject FirstHoleOfReport(const curvature_inpaint::HoleFillResult& result) {
+  const std::string json = curvature_inpaint::HoleFillReportJson(result, SmallImages());
+  QJsonParseError error;
+  const QJsonDocument doc = QJsonDocument::fromJson(QByteArray::fromStdString(json), &error);
+  EXPECT_EQ(error.error, QJsonParseError::NoError) << error.errorString().toStdString() << json;
+  return doc.object()["holes"].toArray()[0].toObject();
+}
+
 // JSON has no infinity and no NaN: a value that is not finite (a candidate whose fill could
 // not be scored, a score of a blank image) is written as null, so the report still parses.
 TEST(Report, NumbersThatAreNotFiniteAreWrittenAsNull) {
@@ -504,11 +513,7 @@ TEST(Report, NumbersThatAreNotFiniteAreWrittenAsNull) {
   r.choice = 0;
   r.max_move = std::numeric_limits<double>::quiet_NaN();
   result.holes.push_back(r);
-  const std::string json = curvature_inpaint::HoleFillReportJson(result, SmallImages());
-  QJsonParseError error;
-  const QJsonDocument doc = QJsonDocument::fromJson(QByteArray::fromStdString(json), &error);
-  ASSERT_EQ(error.error, QJsonParseError::NoError) << error.errorString().toStdString() << json;
-  const QJsonObject hole = doc.object()["holes"].toArray()[0].toObject();
+  const QJsonObject hole = FirstHoleOfReport(result);
   EXPECT_TRUE(hole["scores"].toArray()[0].isNull());
   EXPECT_DOUBLE_EQ(hole["scores"].toArray()[1].toDouble(), 0.25);
   const QJsonObject validation = hole["validation"].toObject();
@@ -516,6 +521,25 @@ TEST(Report, NumbersThatAreNotFiniteAreWrittenAsNull) {
   EXPECT_DOUBLE_EQ(validation["candidates"].toArray()[0].toObject()["error"].toDouble(), 0.5);
   EXPECT_TRUE(validation["per_fake_hole"].toArray()[0].toArray()[1].isNull());
   EXPECT_TRUE(hole["max_move"].isNull());
+}
+
+TEST(Report, NotesReadBackExactlyWhateverCharactersTheyHold) {
+  // A note may quote a file name or a server's message: quotes, backslashes, line breaks.
+  const std::string note = "server said \"bad\" at C:\\scans\\a.ply\nthen\t\x01stopped";
+  curvature_inpaint::HoleFillResult result;
+  curvature_inpaint::HoleFillReport r;
+  r.kinds = {"symmetry \"mirrored\""};
+  r.kind = r.kinds[0];
+  r.validation_note = note;
+  r.crease_note = note;
+  r.problem = note;
+  result.holes.push_back(r);
+  const QJsonObject hole = FirstHoleOfReport(result);
+  EXPECT_EQ(hole["validation"].toObject()["note"].toString().toStdString(), note);
+  EXPECT_EQ(hole["no_creases"].toString().toStdString(), note);
+  EXPECT_EQ(hole["problem"].toString().toStdString(), note);
+  EXPECT_EQ(hole["kind"].toString().toStdString(), r.kind);
+  EXPECT_EQ(hole["kinds"].toArray()[0].toString().toStdString(), r.kind);
 }
 
 TEST(FakeHoles, TheValidatedChoiceIsTheSameForAnyThreadCount) {

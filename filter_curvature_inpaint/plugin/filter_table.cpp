@@ -2,6 +2,7 @@
 
 #include "curvature_images.h"
 #include "hole_fill.h"
+#include "json_text.h"
 
 #include <cstdio>
 #include <stdexcept>
@@ -271,23 +272,6 @@ std::string DefaultJson(const ParamSpec& p) {
 }
 
 } // namespace
-
-std::string JsonQuoted(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
-      out += escaped;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
 
 const std::vector<FilterSpec>& Filters() {
   static const std::vector<FilterSpec> filters{CoarseHoleFill(), CurvatureImages(), HoleFill(),

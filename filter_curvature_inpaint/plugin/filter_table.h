@@ -75,9 +75,6 @@ private:
   std::map<std::string, ParamValue> values_;
 };
 
-/// `text` as a JSON string literal, quotes included.
-std::string JsonQuoted(const std::string& text);
-
 /// The table as JSON (filters with name, python_name, info, categories, own_dialog and the
 /// parameters with type, name, label, help, default and choices): what the adapters must list.
 std::string FiltersJson();
