@@ -1189,7 +1189,7 @@ void CheckHoleFillParams(const HoleFillParams& p) {
     throw vcg_ext::InvalidParameterError("unknown mode \"" + p.mode + "\" (direct or paper)");
   CheckCurvatureImagesParams(p.images);
   CheckInpaintParams(p.inpaint);
-  RequireRange(p.pick, 0, 10, "the variation to use");
+  RequireRange(p.pick, -1, 10, "the variation to use");
   for (int pick : p.hole_picks) RequireRange(pick, -1, 1000, "a hole's variation to use");
   RequireRange(p.direct.iterations, 1, 100, "the deformation solves");
   RequireRange(p.direct.apss_passes, 0, 20, "the curvature passes");

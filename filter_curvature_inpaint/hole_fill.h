@@ -56,7 +56,8 @@ struct HoleFillParams {
   CurvatureImagesParams images;
   InpaintParams inpaint;
   std::string mode = "direct"; ///< "direct" or "paper"
-  int pick = 0;                ///< 0: the best score; k >= 1: variation k of every hole
+  /// -1: every hole keeps its coarse fill; 0: the best score; k >= 1: variation k of every hole
+  int pick = 0;
   /// Non-empty: the first variation of this kind ("creases", ...) of every hole that has one,
   /// the automatic pick elsewhere (benchmarks: what a prior does where it applies).
   std::string pick_kind;

@@ -383,7 +383,18 @@ class DetailAndValidation(TempDirTest):
             self.assertEqual(h["kinds"][h["pick"] - 1], h["kind"])
         r = run([TOOL, "fill", self.SAMPLE, self.path("x.ply"), "--pick", "mirror"])
         self.assertEqual(r.returncode, 2)
-        self.assertIn("--pick needs auto, a variation number >= 1 or a kind", r.stderr)
+        self.assertIn("--pick needs auto, coarse, a variation number >= 1 or a kind", r.stderr)
+
+    def test_pick_coarse_keeps_every_holes_coarse_fill(self):
+        every, holes, _ = self.fill("--pick", "coarse")
+        listed, _, _ = self.fill("--pick", "coarse,coarse,coarse")
+        self.assertEqual(len(holes), 3)
+        for h in holes:
+            self.assertEqual(h["pick"], 0)
+            self.assertEqual(h["problem"], "asked to keep its coarse fill")
+        self.assertEqual(every, listed)
+        auto, _, _ = self.fill()
+        self.assertNotEqual(every, auto)
 
     def test_preview_shows_the_fills_variations_and_a_list_picks_per_hole(self):
         before = sha256(self.SAMPLE)

@@ -28,16 +28,17 @@ namespace {
 const char* const kUsage =
     "usage:\n"
     "  curvature-inpaint fill IN OUT [--backend NAME] [--url URL] [--model M] [--prompt TEXT]\n"
-    "                   [--variations N] [--pick auto|K|KIND|A,B,...] [--mode direct|paper]\n"
-    "                   [--similitude S] [--transformation-constant T] [--max-hole-edges N]\n"
-    "                   [--size PX]\n"
+    "                   [--variations N] [--pick auto|coarse|K|KIND|A,B,...]\n"
+    "                   [--mode direct|paper] [--similitude S] [--transformation-constant T]\n"
+    "                   [--max-hole-edges N] [--size PX]\n"
     "                   [--images DIR] [--report FILE.json] [--from-images DIR] [--context C]\n"
     "                   [--fake-holes K] [--fake-hole-size PX] [--detail A] [--density D]\n"
     "                   [--no-symmetry] [--exemplar] [--no-creases] [--no-tri-laplacian]\n"
     "                   [--curvature-passes N] [--oracle GT]\n"
     "      The main job: fill every hole of IN with detail (coarse fill, curvature images,\n"
     "      inpainting, deformation to the chosen variation) and write OUT. --pick auto (default)\n"
-    "      takes the validated (or best-scored) variation; --pick KIND the first variation of\n"
+    "      takes the validated (or best-scored) variation; --pick coarse keeps every hole's\n"
+    "      coarse fill (at the fill's density); --pick KIND the first variation of\n"
     "      that kind where a hole has one (exemplar, symmetry, symmetry surface, creases,\n"
     "      face, tri-laplacian); --pick A,B,... one entry per hole as `preview` numbers them,\n"
     "      each auto, coarse (keep the coarse fill) or a variation number.\n"
@@ -320,8 +321,8 @@ int InpaintCommand(Args& args) {
   return 0;
 }
 
-/// --pick: auto, a variation number or a kind for every hole, or a comma-separated list with
-/// one entry per hole, each auto, coarse or a number (what `preview` showed).
+/// --pick: auto, coarse, a variation number or a kind for every hole, or a comma-separated list
+/// with one entry per hole, each auto, coarse or a number (what `preview` showed).
 void ReadPick(const std::string& pick, curvature_inpaint::HoleFillParams& p) {
   const std::vector<std::string> kinds{"continuation",     "exemplar", "symmetry",
                                        "symmetry surface", "creases",  "face",
@@ -337,11 +338,12 @@ void ReadPick(const std::string& pick, curvature_inpaint::HoleFillParams& p) {
   };
   if (pick.find(',') == std::string::npos) {
     if (pick == "auto") return;
-    p.pick = number(pick);
+    p.pick = pick == "coarse" ? -1 : number(pick);
     if (p.pick == 0)
-      throw UsageError("--pick needs auto, a variation number >= 1 or a kind (continuation, "
-                       "exemplar, symmetry, symmetry surface, creases, face, tri-laplacian), or "
-                       "one entry per hole (auto, coarse or a number) separated by commas");
+      throw UsageError("--pick needs auto, coarse, a variation number >= 1 or a kind "
+                       "(continuation, exemplar, symmetry, symmetry surface, creases, face, "
+                       "tri-laplacian), or one entry per hole (auto, coarse or a number) "
+                       "separated by commas");
     return;
   }
   size_t from = 0;
