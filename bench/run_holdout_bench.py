@@ -18,7 +18,8 @@ truth's. --oracle adds
 inpainter) with its per-stage curvature spreads. --sweep-detail runs `fill --detail A` for each
 A (choose the default on the tuning half); --variant runs `fill ARGS` as a column NAME ({gt} in
 ARGS is the hole's ground truth); variants named after a validation candidate (for example
-"creases=--pick creases --fake-holes 0") enter the validated-choice table.
+"creases=--pick creases --fake-holes 0") enter the validated-choice table and the line
+of a choice that knew the truth (the best of them on every validated hole).
 --split dev runs the 48 development holes (see holes()), where a choice needs more holes than
 the tuning half's 16; --seeds FIRST-LAST draws them at those seeds instead of 9001-9006 (the
 README's 24 more fandisk holes: --split dev --seeds 9007-9030 --only fandisk). --only keeps the
