@@ -255,9 +255,10 @@ void WriteHoleImages(const std::string& dir, const CurvatureImagesResult& result
          << "  \"vertices\": [";
     for (size_t v = 0; v < hi.patch.vertices.size(); ++v)
       json << (v ? ",\n    " : "\n    ") << "{\"index\": " << hi.patch.vertices[v]
-           << ", \"u\": " << hi.uv.uv[v].x() << ", \"v\": " << hi.uv.uv[v].y()
-           << ", \"curvature\": " << JsonNumber{hi.curvature[v]} << ", \"value\": " << hi.value[v]
-           << "}";
+           << ", \"u\": " << JsonNumber{hi.uv.uv[v].x()}
+           << ", \"v\": " << JsonNumber{hi.uv.uv[v].y()}
+           << ", \"curvature\": " << JsonNumber{hi.curvature[v]}
+           << ", \"value\": " << JsonNumber{hi.value[v]} << "}";
     json << "\n  ]\n}\n";
     if (!json) throw std::runtime_error("cannot write " + base + ".json");
   }

@@ -94,6 +94,18 @@ class MeshlabServer(TempDirTest):
         n = len(read_binary_ply_xyz(src))
         self.assertEqual(filled["0"][:n], filled["2"][:n])
         self.assertNotEqual(filled["0"][n:], filled["2"][n:])
+        # Variation -1: no variation, every hole keeps its coarse fill.
+        script = self.path("coarse.mlx")
+        with open(script, "w") as f:
+            f.write(shipped.replace('name="Variation" value="0"', 'name="Variation" value="-1"'))
+        out = self.path("coarse.ply")
+        r = self.meshlabserver(src, out, script)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertIn("detail 1: none: asked to keep its coarse fill", r.stdout + r.stderr)
+        self.assertEqual(info(out)["holes"], 0)
+        coarse = read_binary_ply_xyz(out)
+        self.assertEqual(coarse[:n], filled["0"][:n])
+        self.assertNotEqual(coarse[n:], filled["2"][n:])
 
     def test_symmetry_exemplar_and_tri_laplacian_parameters_reach_the_pipeline(self):
         # Igea is mirror-symmetric: the shipped script finds its plane and validates the

@@ -161,7 +161,8 @@ FilterSpec HoleFill() {
                   "How many completions of each hole's image to ask for (1-10)."));
   p.push_back(Int("Variation", 0, "Variation to use",
                   "0: the one with the best score (continuity across the hole's border, colours "
-                  "on the palette, values in the surroundings' range); k: the k-th."));
+                  "on the palette, values in the surroundings' range); k: the k-th; -1: none, "
+                  "every hole keeps its coarse fill."));
   p.push_back(Int("FakeHoles", d.validation.fake_holes, "Fake holes per hole",
                   "Embedded backend: cut this many holes of each hole's size into the known "
                   "surface near it, fill them every way (the coarse fill, detail amplitudes 0 to "
