@@ -69,6 +69,23 @@ TEST(CreaseFill, FacesOfBothSensesMeetAsOneSolidAndStayFinite) {
   }
 }
 
+// A hole's patch on Nefertiti (met filling a hole of the benchmark's tuning half): eleven curved
+// faces beside the hole meet at creases of both senses, but the solid their fitted surfaces
+// bound has no boundary near some fill vertices: projected onto it, 14 of them run off to
+// infinity. The crease fill declines and says why, with no points for the validation to score
+// or the mesh to take; the hole keeps its other candidates.
+TEST(CreaseFill, FacesThatDoNotMeetNearTheHoleAreDeclined) {
+  const Patch p = ReadPatch(CI_TEST_DATA "/nefertiti_faces_apart_patch.txt");
+  ASSERT_EQ(p.points.size(), 1110u);
+  ASSERT_EQ(p.triangles.size(), 2100u);
+  const vcg_ext::CreaseFill fill =
+      vcg_ext::FillAcrossCreases(p.points, p.triangles, p.is_fill, p.free, {});
+  EXPECT_EQ(fill.problem, "the faces beside it do not meet near it");
+  EXPECT_TRUE(fill.points.empty());
+  EXPECT_EQ(fill.regions, 11);
+  EXPECT_GT(fill.crease_edges, 0);
+}
+
 // A hole in one curved face with no crease anywhere near (a grid on z = 0.3 x^2 + 0.1 y^2, its
 // middle a flat fill): asked for, the fill is that face extended, on the surface to rounding;
 // by default, and on a surface that is no quadric, there is none.
