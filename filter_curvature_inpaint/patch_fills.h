@@ -76,8 +76,8 @@ QImage SurfaceImage(const HoleImage& hi, const std::vector<Eigen::Vector3d>& poi
 /// crowd, and backed off as a whole every crease of the hole came back rounded (13-30 degrees
 /// off on three fandisk development holes; 2-23 backed off locally). Only where that does not
 /// mend it is the whole fill backed off. The fill with its vertices spread over the faces
-/// (`kCreaseRelaxRounds`) is taken where it needs no backing off, or less than the vertices
-/// projected one by one: spread, the vertex put on a corner of three faces can fold its
+/// (ten rounds of umbrella smoothing) is taken where it needs no backing off, or less than the
+/// vertices projected one by one: spread, the vertex put on a corner of three faces can fold its
 /// triangles (fandisk_701 of the benchmark).
 vcg_ext::CreaseFill CreasedPatch(const HoleImage& hi, const HoleFillParams& params);
 
