@@ -110,7 +110,9 @@ struct HoleFillReport {
   int crease_flips = 0;       ///< fill edges flipped onto the fill's creases
   std::vector<int> differing; ///< paper mode: differing vertices per step
   double max_move = 0;        ///< unit-box units
-  double coarse_s = 0, images_s = 0, inpaint_s = 0, deform_s = 0;
+  /// Wall time per stage; `validation_s` is the fake holes' (stage 8's choice), `inpaint_s`
+  /// the rest of stage 8.
+  double coarse_s = 0, images_s = 0, validation_s = 0, inpaint_s = 0, deform_s = 0;
   /// Curvature spread (standard deviation over the fill, unit-box curvature) of what the
   /// chain carries, when measured: the ground truth and its image (oracle only, else 0), the
   /// target at the fill's vertices and the deformed fill's APSS curvature.
@@ -156,7 +158,7 @@ struct HoleVariations {
   std::string validation_note;
   std::string symmetry_note; ///< why the hole has no symmetry variation; empty if it has
   std::string crease_note;   ///< why the hole has no crease variation; empty if it has
-  double images_s = 0, inpaint_s = 0;
+  double images_s = 0, validation_s = 0, inpaint_s = 0; ///< as in HoleFillReport
 };
 
 struct HoleFillResult {

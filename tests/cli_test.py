@@ -324,6 +324,7 @@ class DetailAndValidation(TempDirTest):
         self.assertGreater(moved, 1e-4)
         for h in holes0 + holes2:
             self.assertNotIn("validation", h)  # an amplitude given: no fake holes
+            self.assertEqual(h["seconds"]["validation"], 0)
         # Detail 0 is the smooth continuation: every continuation the same (the symmetry
         # prior's variations, where a hole has them, come after the continuations).
         def continuations(h):
@@ -371,6 +372,10 @@ class DetailAndValidation(TempDirTest):
             self.assertEqual(h["pick"] == 0, v["choice"] == "coarse", h)
             self.assertIn(f"validation {k}: on {v['fake_holes']} fake hole", log)
             self.assertIn(f"chose {v['choice']}", log)
+            # The fake holes' time is their own, not counted in the inpainting's.
+            self.assertGreater(h["seconds"]["validation"], 0)
+            self.assertRegex(log, rf"inpaint {k}: \d+ edges, .*images \d+ ms, validation \d+ ms, "
+                                  r"inpaint \d+ ms, deform \d+ ms")
         # The same seed: the same choices and the same mesh.
         again, holes_again, _ = self.fill()
         self.assertEqual([h["validation"]["choice"] for h in holes],

@@ -70,8 +70,8 @@ class MeshLabGui(TempDirTest):
         chosen = re.search(r"validation 1: on \d fake holes, .*; chose ([a-z0-9.-]+(?: [a-z0-9.-]+)*)", text)
         self.assertIsNotNone(chosen, text)
         if chosen.group(1) == "coarse":
-            self.assertIn("detail 1: none: skipped; it keeps its coarse fill", text)
+            self.assertIn("inpaint 1: none: skipped; it keeps its coarse fill", text)
         elif chosen.group(1).startswith("detail"):
-            self.assertRegex(text, r"detail 1: \d+ edges, variation \d+ of \d+")
+            self.assertRegex(text, r"inpaint 1: \d+ edges, variation \d+ of \d+")
         else:  # a prior's variation, named by its kind
-            self.assertRegex(text, r"detail 1: \d+ edges, variation \d+ " + re.escape(chosen.group(1)) + " of")
+            self.assertRegex(text, r"inpaint 1: \d+ edges, variation \d+ " + re.escape(chosen.group(1)) + " of")

@@ -101,7 +101,7 @@ class MeshlabServer(TempDirTest):
         out = self.path("coarse.ply")
         r = self.meshlabserver(src, out, script)
         self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
-        self.assertIn("detail 1: none: asked to keep its coarse fill", r.stdout + r.stderr)
+        self.assertIn("inpaint 1: none: asked to keep its coarse fill", r.stdout + r.stderr)
         self.assertEqual(info(out)["holes"], 0)
         coarse = read_binary_ply_xyz(out)
         self.assertEqual(coarse[:n], filled["0"][:n])
@@ -167,7 +167,7 @@ class MeshlabServer(TempDirTest):
         r = self.meshlabserver(src, out, self.edited_script("curvature_inpaint_deform_to_curvature_image.mlx",
                                                             {"Folder": folder}))
         self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
-        self.assertIn("detail 1: 43 edges, variation 1 of 1", r.stdout + r.stderr)
+        self.assertIn("inpaint 1: 43 edges, variation 1 of 1", r.stdout + r.stderr)
         self.assertEqual(info(out)["holes"], 0)
 
     def test_deform_without_a_folder_is_refused(self):
