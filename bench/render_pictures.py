@@ -5,9 +5,10 @@ scale per picture), shaded, seen along the ground truth's mean normal at the hol
 
     python3 bench/render_pictures.py      # writes docs/holes_<name>.png
 
-Holes: the Igea nose of ../shared/bench/cases.tsv; of bench/holes.tsv, a koala hole of the
-test half (its mirror image holds the missing shape) and the tuning half's larger fandisk
-hole (its CAD creases).
+Holes: the Igea nose and the armadillo belly of ../shared/bench/cases.tsv; of bench/holes.tsv,
+an armadillo hole of the test half (the posed body's mirror image holds near the hole, not in
+it), a koala hole of the test half (its mirror image holds the missing shape) and the tuning
+half's larger fandisk hole (its CAD creases).
 """
 import json
 import os
@@ -27,6 +28,8 @@ TOOL = os.path.join(BIN, "curvature-inpaint")
 BENCH = os.path.join(BIN, "bench_tools")
 # (name, mesh, seed vertex or None for the holes.tsv row's draw, radius fraction, row seed)
 CASES = [("igea_nose", "igea_190k.ply", 21537, "0.05", None),
+         ("armadillo_belly", "armadillo.ply", 35206, "0.04", None),
+         ("armadillo_304", "armadillo.ply", None, "0.05", 304),
          ("koala_504", "koala.ply", None, "0.05", 504),
          ("fandisk_703", "fandisk.ply", None, "0.05", 703)]
 
