@@ -146,6 +146,8 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& 
     if (ctx.symmetry) {
       mirror = MirroredPatch(*ctx.symmetry, hi, ctx.coarse->box, params);
       hv.symmetry_note = mirror.problem;
+      if (mirror.problem.empty())
+        hv.mirror_covered = mirror.covered, hv.mirror_ring_residual = mirror.ring_residual;
     }
     const bool symmetric = ctx.symmetry && mirror.problem.empty();
     vcg_ext::CreaseFill crease;
@@ -359,6 +361,8 @@ void DeformHole(const HoleImage& hi, size_t k, const vcg_ext::CoarseFillResult& 
   report.validation_note = hv.validation_note;
   report.symmetry_note = hv.symmetry_note;
   report.crease_note = hv.crease_note;
+  report.mirror_covered = hv.mirror_covered;
+  report.mirror_ring_residual = hv.mirror_ring_residual;
   report.validation_s = hv.validation_s;
   report.inpaint_s = hv.inpaint_s;
   report.truth_spread = hv.truth_spread;
@@ -796,6 +800,11 @@ std::vector<std::string> DescribeHoleFill(const HoleFillResult& result) {
     lines.emplace_back(buf);
     if (r.crease_flips > 0)
       lines.back() += ", " + std::to_string(r.crease_flips) + " fill edges flipped onto creases";
+    if (r.mirror_covered >= 0)
+      lines.back() += ", mirror image on " + std::to_string(std::lround(100 * r.mirror_covered)) +
+                      " % of the fill, its ring within " +
+                      QString::number(100 * r.mirror_ring_residual, 'f', 1).toStdString() +
+                      " % of the hole's radius";
   }
   return lines;
 }
@@ -870,6 +879,9 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
         << ", \"truth_image\": " << JsonNumber{r.truth_spread.image}
         << ", \"target\": " << JsonNumber{r.target_spread}
         << ", \"result\": " << JsonNumber{r.result_spread} << "}";
+    if (r.mirror_covered >= 0)
+      o << ", \"mirror_image\": {\"covered\": " << JsonNumber{r.mirror_covered}
+        << ", \"ring_residual\": " << JsonNumber{r.mirror_ring_residual} << "}";
     if (!r.symmetry_note.empty()) o << ", \"no_symmetry\": " << JsonQuoted(r.symmetry_note);
     if (!r.crease_note.empty()) o << ", \"no_creases\": " << JsonQuoted(r.crease_note);
     if (!r.problem.empty()) o << ", \"problem\": " << JsonQuoted(r.problem);

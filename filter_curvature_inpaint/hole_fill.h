@@ -129,7 +129,11 @@ struct HoleFillReport {
   std::vector<std::vector<double>> fake_hole_errors;
   std::string validation_note;            ///< why there are fewer fake holes, or none
   std::string symmetry_note, crease_note; ///< why it has no such variation; empty if it has
-  std::string problem;                    ///< why the hole kept its coarse fill; empty if none
+  /// Where the hole has a mirror image: the share of its fill that the image covers and the
+  /// mirrored ring's distance from the ring after their rigid registration (RMS, hole radii);
+  /// -1 where it has none.
+  double mirror_covered = -1, mirror_ring_residual = -1;
+  std::string problem; ///< why the hole kept its coarse fill; empty if none
 };
 
 /// One hole's inpainting (stages 3-8) as a person previews it and FillHoles applies it.
@@ -158,7 +162,8 @@ struct HoleVariations {
   std::string validation_note;
   std::string symmetry_note; ///< why the hole has no symmetry variation; empty if it has
   std::string crease_note;   ///< why the hole has no crease variation; empty if it has
-  double images_s = 0, validation_s = 0, inpaint_s = 0; ///< as in HoleFillReport
+  double mirror_covered = -1, mirror_ring_residual = -1; ///< as in HoleFillReport
+  double images_s = 0, validation_s = 0, inpaint_s = 0;  ///< as in HoleFillReport
 };
 
 struct HoleFillResult {

@@ -732,6 +732,16 @@ void ExpectTheBumpBackFromItsTwin(const curvature_inpaint::HoleFillResult& resul
   EXPECT_EQ(r.kind.rfind("symmetry", 0), 0u) << "chose " << r.kind << ": " << Validation(r);
   // The twin's height is the bump's: the mirror image brings it back.
   EXPECT_NEAR(test::FillHeight(m, scan_vertices, bump), test::kEggBump, 0.1 * test::kEggBump);
+  // The egg's halves are exact twins: the image covers the fill, its ring lies on the ring.
+  EXPECT_GE(r.mirror_covered, 0.8);
+  EXPECT_GE(r.mirror_ring_residual, 0);
+  EXPECT_LT(r.mirror_ring_residual, 0.02);
+  std::string log;
+  for (const std::string& line : curvature_inpaint::DescribeHoleFill(result)) log += line + "\n";
+  EXPECT_NE(log.find("mirror image on "), std::string::npos) << log;
+  EXPECT_NE(curvature_inpaint::HoleFillReportJson(result, HoleFillParams())
+                .find("\"mirror_image\": {\"covered\": "),
+            std::string::npos);
 }
 
 TEST(Symmetry, AHoleOverABumpComesBackLikeItsTwin) {
@@ -784,6 +794,7 @@ TEST(Symmetry, AHoleWhoseTwinIsMissingTooKeepsTheContinuation) {
         << r.problem;
     EXPECT_EQ(std::count(r.candidates.begin(), r.candidates.end(), "symmetry"), 0);
     EXPECT_EQ(r.mirror_fake_holes, 0) << "the mirror place is the other hole";
+    EXPECT_LT(r.mirror_covered, 0) << "its mirror image is in the other hole";
     if (r.problem.empty()) EXPECT_TRUE(r.kind == "continuation" || r.kind == "tri-laplacian");
   }
 }

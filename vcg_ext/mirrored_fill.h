@@ -49,8 +49,10 @@ struct MirroredFillParams {
 struct MirroredFill {
   std::vector<Eigen::Vector3d> points; ///< the whole patch, fill vertices moved
   double covered = 0;                  ///< fraction of the fill's vertices with a mirror image
-  double ring_residual = 0; ///< RMS distance of the rigidly registered ring to the real one
-  std::string problem;      ///< why there is no fill; empty if there is one
+  /// RMS distance of the rigidly registered mirrored ring to the real one, in hole radii: how
+  /// far the two halves differ around the hole.
+  double ring_residual = 0;
+  std::string problem; ///< why there is no fill; empty if there is one
 };
 
 namespace detail {
@@ -240,7 +242,7 @@ inline MirroredFill MirrorFill(const std::vector<Eigen::Vector3d>& points,
       fixed[i] = 1;
       sum2 += correction[i].squaredNorm();
     }
-  out.ring_residual = std::sqrt(sum2 / ring);
+  out.ring_residual = std::sqrt(sum2 / ring) / radius;
   detail::HarmonicInterpolation(triangles, fixed, correction);
   // The fill's displacements: the registered image where there is one, interpolated from
   // those (and from the ring, which stays) where there is none.
