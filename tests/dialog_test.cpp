@@ -231,6 +231,10 @@ private slots:
     QVERIFY(list->item(4)->text().contains("tri-laplacian"));
     QVERIFY(list->item(5)->text().contains("symmetry"));
     QCOMPARE(list->item(6)->data(Qt::UserRole).toString(), QString("symmetry surface"));
+    for (int row : {5, 6})
+      QVERIFY2(list->item(row)->toolTip().contains("mirror image, which covers 100 % of the fill"),
+               qPrintable(list->item(row)->toolTip()));
+    QVERIFY(list->item(4)->toolTip().isEmpty());
     QVERIFY(list->item(7)->text().contains("face"));
     QTest::mouseClick(list->viewport(), Qt::LeftButton, {},
                       list->visualItemRect(list->item(6)).center());

@@ -22,6 +22,7 @@
 #include <QThread>
 #include <QVBoxLayout>
 
+#include <cmath>
 #include <cstdlib>
 #include <limits>
 #include <utility>
@@ -537,6 +538,13 @@ void HoleFillDialog::ShowHoles() {
                                                             : QString::number(hv.scores[j], 'f', 5))
                                                  .arg(int(j) == best ? " (auto)" : ""));
       item->setData(Qt::UserRole, prior ? QString::fromStdString(hv.kinds[j]) : "continuation");
+      // How far to trust a mirror image: how much of the fill it covers and how far the two
+      // halves differ around the hole.
+      if (j < hv.kinds.size() && hv.kinds[j].rfind("symmetry", 0) == 0 && hv.mirror_covered >= 0)
+        item->setToolTip(QString("From the object's mirror image, which covers %1 % of the fill; "
+                                 "around the hole the two halves differ by %2 % of its radius.")
+                             .arg(std::lround(100 * hv.mirror_covered))
+                             .arg(100 * hv.mirror_ring_residual, 0, 'f', 1));
       if (int(j) == best) {
         QFont f = item->font();
         f.setBold(true);
