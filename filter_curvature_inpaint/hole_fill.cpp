@@ -74,6 +74,20 @@ const std::string& KindOf(const HoleVariations& hv, size_t j) {
   return j < hv.kinds.size() ? hv.kinds[j] : continuation;
 }
 
+/// A hole's variations by number and kind, as `preview` shows them: "1-4 continuation, 5
+/// tri-laplacian".
+std::string ListVariations(const HoleVariations& hv) {
+  std::string list;
+  for (size_t j = 0; j < hv.variations.size();) {
+    size_t end = j + 1;
+    while (end < hv.variations.size() && KindOf(hv, end) == KindOf(hv, j)) ++end;
+    list += (list.empty() ? "" : ", ") + std::to_string(j + 1) +
+            (end > j + 1 ? "-" + std::to_string(end) : "") + " " + KindOf(hv, j);
+    j = end;
+  }
+  return list.empty() ? "none" : list;
+}
+
 /// The exemplar inpainter's variations, as many as the continuations, after them.
 void AddExemplars(HoleVariations& hv, const InpaintParams& params) {
   for (QImage& v : InpaintExemplarVariations(hv.image, hv.mask, params, params.variations)) {
@@ -105,6 +119,10 @@ bool UsesSymmetry(const HoleFillParams& p) {
 /// Stage 8 for one hole: from the backend, or from the folder a person inpainted by hand in.
 HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& params,
                            const InpaintParams& inpaint, const ValidationContext& ctx) {
+  const size_t holes = size_t(ctx.coarse->FilledCount());
+  if (!params.hole_picks.empty() && params.hole_picks.size() != holes)
+    throw std::invalid_argument("a pick is given for " + std::to_string(params.hole_picks.size()) +
+                                " holes, and the mesh has " + std::to_string(holes) + " to fill");
   HoleVariations hv;
   hv.images_s = hi.seconds;
   if (!hi.problem.empty()) {
@@ -200,17 +218,19 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& 
     hv.variations = {KnownPixelsKept(done, hv.image, hv.mask)};
   }
   hv.inpaint_s = Since(t) - hv.validation_s;
-  if (listed && pick > int(hv.variations.size()))
+  if (pick > int(hv.variations.size()))
     throw std::invalid_argument("hole " + std::to_string(k + 1) + " has no variation " +
-                                std::to_string(pick) + " (it has " +
-                                std::to_string(hv.variations.size()) + ")");
+                                std::to_string(pick) + "; it has " + ListVariations(hv));
   ScoreAndPick(hv, pick);
-  if (!pick_kind.empty())
+  if (!pick_kind.empty()) {
+    hv.pick_note = "it has no " + pick_kind + " variation";
     for (size_t j = 0; j < hv.variations.size(); ++j)
       if (KindOf(hv, j) == pick_kind) {
         hv.pick = int(j) + 1;
+        hv.pick_note.clear();
         break;
       }
+  }
   return hv;
 }
 
@@ -349,7 +369,8 @@ void DeformHole(const HoleImage& hi, size_t k, const vcg_ext::CoarseFillResult& 
   } else {
     hv = InpaintHole(hi, k, params, inpaint, ctx);
     if (hv.problem.empty() && hv.pick == 0)
-      hv.problem = "the coarse fill validated best; it keeps it";
+      hv.problem = (hv.pick_note.empty() ? "" : hv.pick_note + ", and ") +
+                   "the coarse fill validated best; it keeps it";
   }
   report.candidates = hv.candidates;
   report.validation_errors = hv.validation_errors;
@@ -361,6 +382,7 @@ void DeformHole(const HoleImage& hi, size_t k, const vcg_ext::CoarseFillResult& 
   report.validation_note = hv.validation_note;
   report.symmetry_note = hv.symmetry_note;
   report.crease_note = hv.crease_note;
+  report.pick_note = hv.pick_note;
   report.mirror_covered = hv.mirror_covered;
   report.mirror_ring_residual = hv.mirror_ring_residual;
   report.validation_s = hv.validation_s;
@@ -558,7 +580,7 @@ void CheckHoleFillParams(const HoleFillParams& p) {
     throw vcg_ext::InvalidParameterError("unknown mode \"" + p.mode + "\" (direct or paper)");
   CheckCurvatureImagesParams(p.images);
   CheckInpaintParams(p.inpaint);
-  RequireRange(p.pick, -1, 10, "the variation to use");
+  RequireRange(p.pick, -1, 1000, "the variation to use");
   for (int pick : p.hole_picks) RequireRange(pick, -1, 1000, "a hole's variation to use");
   RequireRange(p.direct.iterations, 1, 100, "the deformation solves");
   RequireRange(p.direct.apss_passes, 0, 20, "the curvature passes");
@@ -798,6 +820,8 @@ std::vector<std::string> DescribeHoleFill(const HoleFillResult& result) {
           1000 * r.deform_s);
     }
     lines.emplace_back(buf);
+    if (!r.pick_note.empty() && r.problem.empty())
+      lines.back() += ", " + r.pick_note + " (the automatic choice instead)";
     if (r.crease_flips > 0)
       lines.back() += ", " + std::to_string(r.crease_flips) + " fill edges flipped onto creases";
     if (r.mirror_covered >= 0)

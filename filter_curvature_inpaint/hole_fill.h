@@ -62,8 +62,8 @@ struct HoleFillParams {
   /// the automatic pick elsewhere (benchmarks: what a prior does where it applies).
   std::string pick_kind;
   /// Per hole, by the holes' numbers (those of `preview` and the report), instead of `pick` and
-  /// `pick_kind`: 0 the automatic pick, -1 the coarse fill, k >= 1 variation k. Holes past the
-  /// list take `pick` and `pick_kind`.
+  /// `pick_kind`: 0 the automatic pick, -1 the coarse fill, k >= 1 variation k. Empty, or one
+  /// entry per hole (FillHoles throws std::invalid_argument otherwise).
   std::vector<int> hole_picks;
   vcg_ext::DirectDeformationParams direct;
   vcg_ext::PaperDeformationParams paper;
@@ -129,6 +129,7 @@ struct HoleFillReport {
   std::vector<std::vector<double>> fake_hole_errors;
   std::string validation_note;            ///< why there are fewer fake holes, or none
   std::string symmetry_note, crease_note; ///< why it has no such variation; empty if it has
+  std::string pick_note; ///< why the kind asked for was not picked; empty if it was
   /// Where the hole has a mirror image: the share of its fill that the image covers and the
   /// mirrored ring's distance from the ring after their rigid registration (RMS, hole radii);
   /// -1 where it has none.
@@ -162,6 +163,7 @@ struct HoleVariations {
   std::string validation_note;
   std::string symmetry_note; ///< why the hole has no symmetry variation; empty if it has
   std::string crease_note;   ///< why the hole has no crease variation; empty if it has
+  std::string pick_note;     ///< why the kind asked for was not picked; empty if it was
   double mirror_covered = -1, mirror_ring_residual = -1; ///< as in HoleFillReport
   double images_s = 0, validation_s = 0, inpaint_s = 0;  ///< as in HoleFillReport
 };

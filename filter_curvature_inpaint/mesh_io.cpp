@@ -553,10 +553,15 @@ void ReadObj(const std::string& path, CMeshO& m, bool& has_color) {
 
 } // namespace
 
-int LoadMesh(const std::string& path, CMeshO& m) {
+void CheckMeshFormat(const std::string& path) {
   const std::string ext = Extension(path);
   if (!Supported(ext))
     throw MeshIoError(path + ": unsupported format \"" + ext + "\" (use .ply, .off, .obj or .stl)");
+}
+
+int LoadMesh(const std::string& path, CMeshO& m) {
+  CheckMeshFormat(path);
+  const std::string ext = Extension(path);
   if (!std::ifstream(path).good()) throw MeshIoError(path + ": cannot open the file");
   int mask = vcg::tri::io::Mask::IOM_VERTCOORD | vcg::tri::io::Mask::IOM_FACEINDEX;
   if (ext == "ply") {
@@ -584,9 +589,8 @@ int LoadMesh(const std::string& path, CMeshO& m) {
 
 void SaveMesh(const std::string& path, CMeshO& m, int mask, const std::string& partial_dir) {
   using Exporter = vcg::tri::io::Exporter<CMeshO>;
+  CheckMeshFormat(path);
   const std::string ext = Extension(path);
-  if (!Supported(ext))
-    throw MeshIoError(path + ": unsupported format \"" + ext + "\" (use .ply, .off, .obj or .stl)");
   // Same extension, so vcglib picks the same writer.
   const std::string beside =
       partial_dir.empty() ? path : partial_dir + "/" + path.substr(path.find_last_of('/') + 1);

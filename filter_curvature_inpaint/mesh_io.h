@@ -16,6 +16,10 @@ public:
   explicit MeshIoError(const std::string& what) : std::runtime_error(what) {}
 };
 
+/// Checks that `path` names a format the tool reads and writes (.ply, .off, .obj, .stl), by its
+/// extension. Throws MeshIoError.
+void CheckMeshFormat(const std::string& path);
+
 /// Loads `path` into `m` (cleared first) and returns vcglib's mask of what the file holds,
 /// so SaveMesh can write the same attributes back. Throws MeshIoError.
 int LoadMesh(const std::string& path, CMeshO& m);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <functional>
+#include <map>
 
 namespace curvature_inpaint {
 
@@ -106,6 +107,38 @@ HoleCensus CountHoles(const CMeshO& m) {
   }
   std::sort(census.loop_edges.begin(), census.loop_edges.end(), std::greater<int>());
   return census;
+}
+
+std::vector<HoleSummary> ListHoles(const CMeshO& m, const vcg_ext::CoarseFillParams& selection) {
+  std::vector<HoleSummary> list;
+  const vcg_ext::EdgeCensus edges = vcg_ext::CensusEdges(m);
+  if (edges.non_manifold_edges != 0) return list;
+  vcg_ext::HoleLoopParams chosen;
+  chosen.max_edges = selection.max_hole_edges;
+  chosen.selected_only = selection.selected_only;
+  chosen.keep_longest_open = selection.keep_longest_open;
+  chosen.max_diameter = selection.max_hole_diameter * double(m.bbox.Diag());
+  // The loops come in the same order with and without a selection; a loop is known by its
+  // first vertex, where every walk of it starts.
+  std::map<int, int> number_of;
+  const vcg_ext::HoleLoops filled = vcg_ext::FindHoleLoops(m, edges, chosen);
+  for (size_t k = 0; k < filled.holes.size(); ++k)
+    number_of[filled.holes[k].vertices[0]] = int(k) + 1;
+  for (const vcg_ext::HoleLoop& loop : vcg_ext::FindHoleLoops(m, edges, {}).holes) {
+    HoleSummary h;
+    const auto it = number_of.find(loop.vertices[0]);
+    h.number = it == number_of.end() ? 0 : it->second;
+    h.edges = loop.EdgeCount();
+    vcg::Box3d box;
+    for (int v : loop.vertices) {
+      const vcg::Point3d p = vcg::Point3d::Construct(m.vert[size_t(v)].cP());
+      box.Add(p);
+      h.centre += p / double(loop.vertices.size());
+    }
+    h.diameter = box.Diag();
+    list.push_back(h);
+  }
+  return list;
 }
 
 ScanPart ScanPartOf(const CMeshO& m, const vcg_ext::CoarseFillResult& coarse) {

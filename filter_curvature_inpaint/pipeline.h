@@ -53,4 +53,16 @@ struct HoleCensus {
 };
 HoleCensus CountHoles(const CMeshO& m);
 
+/// One boundary loop as `info` shows it.
+struct HoleSummary {
+  int number = 0;      ///< as the fill numbers it (1-based); 0: the selection leaves it open
+  int edges = 0;       ///< boundary edges
+  double diameter = 0; ///< diagonal of the loop's bounding box, in the mesh's units
+  vcg::Point3d centre{0, 0, 0}; ///< mean of the loop's vertices
+};
+
+/// Every boundary loop of `m`, in the order the coarse fill (and so every later stage) numbers
+/// the holes it fills with `selection`'s hole options. Empty if `m` has non-manifold edges.
+std::vector<HoleSummary> ListHoles(const CMeshO& m, const vcg_ext::CoarseFillParams& selection);
+
 } // namespace curvature_inpaint

@@ -388,7 +388,8 @@ class DetailAndValidation(TempDirTest):
             self.assertEqual(h["kinds"][h["pick"] - 1], h["kind"])
         r = run([TOOL, "fill", self.SAMPLE, self.path("x.ply"), "--pick", "mirror"])
         self.assertEqual(r.returncode, 2)
-        self.assertIn("--pick needs auto, coarse, a variation number >= 1 or a kind", r.stderr)
+        self.assertIn('--pick: "mirror" is not auto, coarse, a variation number (1 to 1000) or a '
+                      'kind', r.stderr)
 
     def test_pick_coarse_keeps_every_holes_coarse_fill(self):
         every, holes, _ = self.fill("--pick", "coarse")
@@ -436,13 +437,13 @@ class DetailAndValidation(TempDirTest):
         self.assertNotIn("validation", listed[1])  # neither validated nor inpainted
         self.assertEqual(listed[2]["pick"], holes[2]["pick"])
         self.assertNotEqual(picked, auto)
-        r = run([TOOL, "fill", self.SAMPLE, self.path("x.ply"), "--pick", "1,99"])
+        r = run([TOOL, "fill", self.SAMPLE, self.path("x.ply"), "--pick", "1,99,auto"])
         self.assertEqual(r.returncode, 1)
-        self.assertIn("hole 2 has no variation 99", r.stderr)
+        self.assertRegex(r.stderr, r"hole 2 has no variation 99; it has 1-\d continuation")
         self.assertFalse(os.path.exists(self.path("x.ply")))
-        r = run([TOOL, "fill", self.SAMPLE, self.path("x.ply"), "--pick", "1,first"])
+        r = run([TOOL, "fill", self.SAMPLE, self.path("x.ply"), "--pick", "1,first,auto"])
         self.assertEqual(r.returncode, 2)
-        self.assertIn('"first" is not auto, coarse or a variation number', r.stderr)
+        self.assertIn('"first" is not auto, coarse, a variation number', r.stderr)
         r = run([TOOL, "preview", self.SAMPLE, pictures, "--report", self.path("r.json")])
         self.assertEqual(r.returncode, 2)
 
@@ -660,11 +661,23 @@ class BadInput(TempDirTest):
         self.assertIn("unsupported format", r.stderr)
 
     def test_usage_errors(self):
+        # One line that says what is wrong, one that says where the help is; exit status 2.
         r = run([TOOL, "coarse", "only-one-file.ply"])
         self.assertEqual(r.returncode, 2)
-        self.assertIn("usage:", r.stderr)
+        self.assertEqual(r.stderr.splitlines(),
+                         ["curvature-inpaint: coarse: expected IN OUT, got 1 file",
+                          "see 'curvature-inpaint coarse --help'"])
         r = run([TOOL, "coarse", "a.ply", "b.ply", "--max-hole-edges", "-3"])
         self.assertEqual(r.returncode, 2)
+        self.assertEqual(len(r.stderr.splitlines()), 2)
+        self.assertIn("--max-hole-edges needs an integer >= 0", r.stderr)
+        r = run([TOOL, "punch", "a.ply", "b.ply", "--radius-frac", "0.1"])
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("--seed-vertex is required", r.stderr)
+        r = run([TOOL, "fly", "a.ply"])
+        self.assertEqual(r.returncode, 2)
+        self.assertEqual(r.stderr.splitlines(), ['curvature-inpaint: unknown command "fly"',
+                                                 "see 'curvature-inpaint --help'"])
 
 
 if __name__ == "__main__":

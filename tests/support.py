@@ -24,15 +24,19 @@ def sha256(path):
         return hashlib.sha256(f.read()).hexdigest()
 
 
-def info(path):
-    """The tool's `info` report as a dict of ints (hole_edges as a list)."""
-    r = run([TOOL, "info", path])
+def info(path, *options):
+    """The tool's `info` report as a dict of ints (hole_edges as a list), and under "numbered"
+    the boundary edges of the holes fill would fill, by their numbers."""
+    r = run([TOOL, "info", path, *options])
     if r.returncode != 0:
         raise AssertionError(f"info {path} failed: {r.stderr}")
-    out = {}
+    out = {"numbered": {}}
     for line in r.stdout.splitlines():
         key, *values = line.split()
-        out[key] = [int(v) for v in values] if key == "hole_edges" else int(values[0])
+        if key == "hole":  # hole K: E edges, diameter ..., centre ...
+            out["numbered"][int(values[0].rstrip(":"))] = int(values[1])
+        elif key != "left":  # left open: ...
+            out[key] = [int(v) for v in values] if key == "hole_edges" else int(values[0])
     return out
 
 
@@ -138,6 +142,29 @@ class TempDirTest(unittest.TestCase):
                  "--seed-vertex", str(seed), "--radius-frac", str(radius_frac)])
         self.assertEqual(r.returncode, 0, r.stderr)
         return out
+
+
+def read_binary_ply_face_flags(path):
+    """The `flags` of every face of a binary little-endian PLY whose faces are triangles with
+    `list uchar int vertex_indices` then `int flags` (as the tool writes them)."""
+    import struct
+    with open(path, "rb") as f:
+        data = f.read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode()
+    assert "binary_little_endian" in header and "property int flags" in header, header
+    nv = int(header.split("element vertex ")[1].split()[0])
+    nf = int(header.split("element face ")[1].split()[0])
+    props = header.split("element vertex")[1].split("element face")[0]
+    sizes = {"float": 4, "double": 8, "uchar": 1, "int": 4, "uint": 4}
+    stride = sum(sizes[line.split()[1]] for line in props.splitlines() if line.startswith("property"))
+    start = end + nv * stride
+    flags = []
+    for i in range(nf):
+        at = start + i * 17
+        assert data[at] == 3, "not a triangle"
+        flags.append(struct.unpack_from("<i", data, at + 13)[0])
+    return flags
 
 
 def read_binary_ply_xyz(path):

@@ -1,14 +1,19 @@
-// curvature-inpaint: the command-line front end of the pipeline.
-#include "curvature_images.h"
+// curvature-inpaint: the command-line front end of the pipeline. The commands, their options
+// and their help are declared in command_line.cpp; this file runs them.
 #include "batch.h"
-#include "inpaint/server_pool.h"
+#include "command_line.h"
+#include "curvature_images.h"
 #include "hole_fill.h"
-#include "symmetry_prior.h"
 #include "inpaint/inpainter.h"
+#include "inpaint/server_pool.h"
 #include "mesh_io.h"
+#include "output_files.h"
 #include "pipeline.h"
+#include "symmetry_prior.h"
 
+#include <vcg_ext/hole_loops.h>
 #include <vcg_ext/punch_hole.h>
+#include <wrap/io_trimesh/io_mask.h>
 
 #include <QDir>
 #include <QImage>
@@ -17,201 +22,27 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <unistd.h>
 #include <cstring>
 #include <memory>
 #include <string>
+#include <unistd.h>
 #include <vector>
+
+#ifndef CURVATURE_INPAINT_VERSION
+#define CURVATURE_INPAINT_VERSION "unknown"
+#endif
 
 namespace {
 
-const char* const kUsage =
-    "usage:\n"
-    "  curvature-inpaint fill IN OUT [--backend NAME] [--url URL] [--model M] [--prompt TEXT]\n"
-    "                   [--variations N] [--pick auto|coarse|K|KIND|A,B,...]\n"
-    "                   [--mode direct|paper] [--similitude S] [--transformation-constant T]\n"
-    "                   [--max-hole-edges N] [--size PX]\n"
-    "                   [--images DIR] [--report FILE.json] [--from-images DIR] [--context C]\n"
-    "                   [--fake-holes K] [--fake-hole-size PX] [--detail A] [--density D]\n"
-    "                   [--no-symmetry] [--exemplar] [--no-creases] [--no-tri-laplacian]\n"
-    "                   [--curvature-passes N] [--oracle GT]\n"
-    "      The main job: fill every hole of IN with detail (coarse fill, curvature images,\n"
-    "      inpainting, deformation to the chosen variation) and write OUT. --pick auto (default)\n"
-    "      takes the validated (or best-scored) variation; --pick coarse keeps every hole's\n"
-    "      coarse fill (at the fill's density); --pick KIND the first variation of\n"
-    "      that kind where a hole has one (exemplar, symmetry, symmetry surface, creases,\n"
-    "      face, tri-laplacian); --pick A,B,... one entry per hole as `preview` numbers them,\n"
-    "      each auto, coarse (keep the coarse fill) or a variation number.\n"
-    "      Backends and their options as for inpaint.\n"
-    "      --from-images DIR deforms to hole_<k>_inpainted.png, inpainted by hand in DIR\n"
-    "      after `images IN DIR --size PX` (same --max-hole-edges, --context, --size).\n"
-    "      --fake-holes K (default 4): fill each hole the way (coarse fill, or detail 0, 0.5,\n"
-    "      1, 2) that came closest on K holes of its size cut into known surface near it;\n"
-    "      --detail A instead uses amplitude A on every hole (0: the smooth continuation).\n"
-    "      --fake-hole-size PX: the fake holes' images (default 128).\n"
-    "      Where the object is mirror-symmetric and a hole's mirror image is known surface,\n"
-    "      its mirrored curvature and surface are two more variations (validated like the\n"
-    "      rest, never picked unvalidated); --no-symmetry leaves them out. --exemplar: the\n"
-    "      embedded backend also offers N exemplar variations (patches of the known\n"
-    "      curvature copied in, ridges first; validated like the rest).\n"
-    "      A hole that creases run into also gets its context's faces extended across it\n"
-    "      until they meet (sharp edges and corners; validated), a hole inside one smooth\n"
-    "      face with no crease near, that face extended (\"face\"); --no-creases leaves\n"
-    "      both out.\n"
-    "      Every hole also gets its fill faired to continue the curvature around it, not only\n"
-    "      its tangents (a tri-Laplacian; validated); --no-tri-laplacian leaves it out.\n"
-    "      --density D: the fill's vertex density (Liepa's alpha; default 2, coarse 1.41).\n"
-    "      --curvature-passes N (direct mode, default 0): after the first deformation, up to\n"
-    "      N more rounds, each asking for half of what the result's curvature, measured as\n"
-    "      the image was painted, still lacks of the image's (a round that comes no closer\n"
-    "      to the image, or folds the fill, is not taken).\n"
-    "      --oracle GT (benchmarks): deform to the curvature image painted from GT, the mesh\n"
-    "      before its holes were cut: the best any inpainter can do with this deformation\n"
-    "      (the fill at density 2.5 unless --density is given: a finer one, to carry\n"
-    "      the truth's detail).\n"
-    "  curvature-inpaint preview IN DIR [fill options but --images, --report, --oracle]\n"
-    "      The variations fill would choose from, without changing any mesh: per hole its\n"
-    "      validation and its variations by number and kind with their scores and the pick\n"
-    "      fill would make on stdout, and in DIR hole_<k>_coarse.png, hole_<k>_mask.png,\n"
-    "      hole_<k>_variation_<j>.png and montage.png (the pick framed). Then `fill IN OUT\n"
-    "      --pick A,B,...` with the same options applies a choice per hole.\n"
-    "  curvature-inpaint coarse IN OUT [--max-hole-edges N] [--max-hole-diameter F]\n"
-    "                   [--keep-longest-open] [--selected-only] [--liepa-max-edges M] [--threads "
-    "T]\n"
-    "                   [--no-refine] [--no-fair]\n"
-    "      Fill every hole of IN (stages 0-2: Liepa triangulation, refinement, fairing) and\n"
-    "      write OUT. Formats: .ply .off .obj .stl. N = 0 (default) fills holes of any size;\n"
-    "      F: holes whose border spans more than F x the bounding-box diagonal stay open.\n"
-    "      --keep-longest-open leaves the longest loop open: the outer border of an open\n"
-    "      scan. --selected-only fills holes beside selected faces (PLY). Holes up to M\n"
-    "      edges (default 200) get the optimal triangulation, larger ones vcglib's ears.\n"
-    "      --threads T: holes filled at once (default: one per core). The hole options hold\n"
-    "      for images and fill too.\n"
-    "  curvature-inpaint images IN DIR [--size N] [--max-hole-edges N] [--context C]\n"
-    "                                  [--filter-scale S]\n"
-    "      Fill the holes of IN, then write for every hole its curvature image\n"
-    "      (hole_<k>_curvature.png), the same with the hole transparent (hole_<k>_rgba.png),\n"
-    "      the hole's mask (hole_<k>_mask.png, white = hole), hole_<k>.json (patch, UV,\n"
-    "      normalization), and montage.png with all of them. N: pixels (default 1024); C:\n"
-    "      context ring width in hole radii (default 1); S: APSS filter scale (default 4).\n"
-    "  curvature-inpaint inpaint IMAGE MASK OUTDIR [--backend NAME] [--url URL] [--model M]\n"
-    "                  [--prompt TEXT] [--negative-prompt TEXT] [-n N] [--seed S] [--size PX]\n"
-    "                  [--timeout SECONDS] [--retries N] [--max-response-mb MB] [--workflow FILE]\n"
-    "                  [--detail A]\n"
-    "      Complete the hole (white in MASK) of a curvature image into N variations,\n"
-    "      OUTDIR/variation_<i>.png. Backends: embedded (default, offline), openai\n"
-    "      (OPENAI_API_KEY, OPENAI_BASE_URL; --model dall-e-2 or gpt-image-1), sd-webui\n"
-    "      (--url, SD_WEBUI_AUTH=user:pass), stability (STABILITY_API_KEY), comfyui (--url,\n"
-    "      --workflow to use an edited copy of the shipped workflow). Several servers of\n"
-    "      one service: --url repeated, or --url-file F (one URL a line); fill spreads the\n"
-    "      holes over them, --per-server M (default 1) at once on each, a failing server\n"
-    "      set aside and its request sent to another.\n"
-    "  curvature-inpaint batch MANIFEST OUTDIR [--jobs J] [--shard K/N] [fill options]\n"
-    "      The main job over a collection: MANIFEST is a folder (its PLY/OBJ/OFF/STL files)\n"
-    "      or a text file of paths, each optionally followed by its own fill options. Each\n"
-    "      result goes to OUTDIR under the input's name, one JSON line per scan to\n"
-    "      OUTDIR/results.jsonl (results.K-of-N.jsonl for a shard). Resumable: a scan done\n"
-    "      before with the same bytes and options is skipped; a killed batch loses no\n"
-    "      finished scan. A failed scan is recorded and the rest go on (exit status 1).\n"
-    "      --jobs J: scans at once. --shard K/N, or a Slurm job array's SLURM_ARRAY_TASK_ID\n"
-    "      and SLURM_ARRAY_TASK_COUNT: every N-th scan from the K-th.\n"
-    "  curvature-inpaint batch --summary OUTDIR\n"
-    "      The results of every shard as a table, and OUTDIR/summary.csv.\n"
-    "  curvature-inpaint info IN [--symmetry]\n"
-    "      Print the vertex, face and hole counts of IN (boundary edges of each hole);\n"
-    "      --symmetry also the mirror planes the symmetry prior finds in it.\n"
-    "  curvature-inpaint punch IN OUT --seed-vertex V --radius-frac R\n"
-    "      Remove every face with a vertex within R x (bounding-box diagonal) of vertex V:\n"
-    "      the hole cases of the benchmark.\n";
-
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-class Args {
-public:
-  Args(int argc, char** argv) : args_(argv + 1, argv + argc) {}
-  explicit Args(std::vector<std::string> args) : args_(std::move(args)) {}
-  /// What is left, in order.
-  const std::vector<std::string>& Rest() const { return args_; }
-  std::string Command() {
-    if (args_.empty()) throw UsageError("no command given");
-    std::string c = args_.front();
-    args_.erase(args_.begin());
-    return c;
-  }
-  bool Has(const std::string& name) const {
-    return std::find(args_.begin(), args_.end(), name) != args_.end();
-  }
-  bool Flag(const std::string& name) {
-    for (size_t i = 0; i < args_.size(); ++i)
-      if (args_[i] == name) {
-        args_.erase(args_.begin() + i);
-        return true;
-      }
-    return false;
-  }
-  /// Every value of an option given several times, in order.
-  std::vector<std::string> Options(const std::string& name) {
-    std::vector<std::string> values;
-    for (std::string v = Option(name, ""); !v.empty(); v = Option(name, "")) values.push_back(v);
-    return values;
-  }
-  std::string Option(const std::string& name, const std::string& fallback) {
-    for (size_t i = 0; i < args_.size(); ++i)
-      if (args_[i] == name) {
-        if (i + 1 >= args_.size()) throw UsageError(name + " needs a value");
-        std::string v = args_[i + 1];
-        args_.erase(args_.begin() + i, args_.begin() + i + 2);
-        return v;
-      }
-    return fallback;
-  }
-  long Integer(const std::string& name, long fallback, long lo) {
-    const std::string v = Option(name, "");
-    if (v.empty()) return fallback;
-    char* end = nullptr;
-    const long x = std::strtol(v.c_str(), &end, 10);
-    if (*end != '\0' || x < lo)
-      throw UsageError(name + " needs an integer >= " + std::to_string(lo));
-    return x;
-  }
-  double Real(const std::string& name);
-  std::vector<std::string> Positional(size_t count) {
-    for (const auto& a : args_)
-      if (a.size() > 1 && a[0] == '-') throw UsageError("unknown option " + a);
-    if (args_.size() != count)
-      throw UsageError("expected " + std::to_string(count) + " file arguments");
-    return args_;
-  }
-
-private:
-  std::vector<std::string> args_;
-};
-
-/// A finite number above zero, or from zero on when `zero_allowed`.
-double ParseNumber(const std::string& name, const std::string& v, bool zero_allowed) {
-  char* end = nullptr;
-  const double x = std::strtod(v.c_str(), &end);
-  if (v.empty() || *end != '\0' || !std::isfinite(x) || x < 0 || (x == 0 && !zero_allowed))
-    throw UsageError(name + (zero_allowed ? " needs a number >= 0" : " needs a positive number"));
-  return x;
-}
-
-double ParsePositive(const std::string& name, const std::string& v) {
-  return ParseNumber(name, v, false);
-}
-
-double ParseNonNegative(const std::string& name, const std::string& v) {
-  return ParseNumber(name, v, true);
-}
+using curvature_inpaint::cli::Args;
+using curvature_inpaint::cli::Command;
+using curvature_inpaint::cli::UsageError;
 
 /// Which holes to fill and on how many threads: the same options for coarse, images and fill.
 void ReadHoleSelection(Args& args, vcg_ext::CoarseFillParams& p) {
   p.threads = int(args.Integer("--threads", 0, 0));
   p.max_hole_edges = int(args.Integer("--max-hole-edges", 0, 0));
-  const std::string diameter = args.Option("--max-hole-diameter", "");
-  if (!diameter.empty()) p.max_hole_diameter = ParsePositive("--max-hole-diameter", diameter);
+  p.max_hole_diameter = args.Number("--max-hole-diameter", p.max_hole_diameter);
   p.keep_longest_open = args.Flag("--keep-longest-open");
   p.selected_only = args.Flag("--selected-only");
 }
@@ -225,31 +56,78 @@ bool ProgressToStderr(const int, const char* message) {
   return true;
 }
 
-int Coarse(Args& args) {
+/// Where and how a command writes the mesh it makes.
+struct MeshOutput {
+  bool in_place = false; ///< the user allows the output to be the input
+  bool mark_new = false; ///< the new faces are written selected
+  std::string input, path;
+};
+
+/// Takes --in-place and --mark-new out of `args`.
+MeshOutput ReadOutputFlags(Args& args) {
+  MeshOutput out;
+  out.in_place = args.Flag("--in-place");
+  out.mark_new = args.Flag("--mark-new");
+  return out;
+}
+
+/// Checks OUT before any work is done: its format, its folder, and that it is not the input
+/// unless --in-place. Throws UsageError or OutputError.
+void CheckOutput(MeshOutput& out, const std::string& input, const std::string& path) {
+  out.input = input, out.path = path;
+  curvature_inpaint::CheckMeshFormat(path);
+  if (out.mark_new && (path.size() < 4 || strcasecmp(path.c_str() + path.size() - 4, ".ply") != 0))
+    throw UsageError("--mark-new needs a .ply output (the other formats keep no selection)");
+  curvature_inpaint::CheckMeshOutput(input, path, out.in_place);
+}
+
+/// Writes `m` whole or not at all (see SaveMesh), through a link to the file it names.
+void SaveOutput(const MeshOutput& out, CMeshO& m, int mask) {
+  if (out.mark_new) mask |= vcg::tri::io::Mask::IOM_FACEFLAGS;
+  curvature_inpaint::SaveMesh(curvature_inpaint::WriteTarget(out.path), m, mask);
+}
+
+/// The last line of fill and coarse: what was written, and what is left open.
+void SayWritten(const MeshOutput& out, const vcg_ext::CoarseFillResult& coarse,
+                const std::string& report) {
+  const int filled = coarse.FilledCount();
+  const int open = int(coarse.holes.size()) - filled + coarse.skipped_by_size +
+                   coarse.skipped_by_selection + coarse.kept_as_border;
+  std::string line = "wrote " + out.path + ": " + std::to_string(filled) +
+                     (filled == 1 ? " hole" : " holes") + " filled, " + std::to_string(open) +
+                     " left open";
+  if (out.mark_new) line += ", the new faces selected";
+  if (!report.empty()) line += " (report: " + report + ")";
+  std::fprintf(stderr, "%s\n", line.c_str());
+}
+
+int Coarse(Args& args, const Command& command) {
   vcg_ext::CoarseFillParams params;
   ReadHoleSelection(args, params);
   params.dp_max_edges = int(args.Integer("--liepa-max-edges", params.dp_max_edges, 3));
   params.refine = !args.Flag("--no-refine");
   params.fair = !args.Flag("--no-fair");
-  const auto files = args.Positional(2);
+  MeshOutput out = ReadOutputFlags(args);
+  const auto files = args.Files(2, command.synopsis);
+  CheckOutput(out, files[0], files[1]);
   CMeshO m;
   const int mask = curvature_inpaint::LoadMesh(files[0], m);
   const auto result = curvature_inpaint::CoarseFill(m, params, ProgressToStderr);
   for (const auto& line : curvature_inpaint::DescribeCoarseFill(result))
     std::fprintf(stderr, "%s\n", line.c_str());
-  curvature_inpaint::SaveMesh(files[1], m, mask);
+  SaveOutput(out, m, mask);
+  SayWritten(out, result, "");
   return 0;
 }
 
-int Images(Args& args) {
+int Images(Args& args, const Command& command) {
   curvature_inpaint::CurvatureImagesParams params;
   params.image_size = int(args.Integer("--size", params.image_size, 16));
   ReadHoleSelection(args, params.coarse);
-  const std::string context = args.Option("--context", "");
-  if (!context.empty()) params.segmentation.context = ParsePositive("--context", context);
-  const std::string scale = args.Option("--filter-scale", "");
-  if (!scale.empty()) params.apss.filter_scale = float(ParsePositive("--filter-scale", scale));
-  const auto files = args.Positional(2);
+  params.segmentation.context = args.Number("--context", params.segmentation.context);
+  params.apss.filter_scale = float(args.Number("--filter-scale", params.apss.filter_scale));
+  const auto files = args.Files(2, command.synopsis);
+  curvature_inpaint::CheckFolderWritable(files[1]);
   CMeshO m;
   curvature_inpaint::LoadMesh(files[0], m);
   const auto result = curvature_inpaint::ComputeCurvatureImages(m, params, ProgressToStderr);
@@ -257,54 +135,61 @@ int Images(Args& args) {
     std::fprintf(stderr, "%s\n", line.c_str());
   curvature_inpaint::WriteHoleImages(files[1], result);
   curvature_inpaint::WriteMontage(files[1] + "/montage.png", result);
+  std::fprintf(stderr, "wrote the images of %zu holes into %s\n", result.holes.size(),
+               files[1].c_str());
   return 0;
+}
+
+/// The servers of --url (repeated) and --url-file.
+std::vector<std::string> ReadUrls(Args& args) {
+  std::vector<std::string> urls = args.Texts("--url");
+  const std::string url_file = args.Text("--url-file", "");
+  if (url_file.empty()) return urls;
+  std::FILE* f = std::fopen(url_file.c_str(), "r");
+  if (!f) throw UsageError("cannot read --url-file " + url_file);
+  char line[4096];
+  const size_t given = urls.size();
+  while (std::fgets(line, sizeof line, f)) {
+    std::string u(line);
+    u = u.substr(0, u.find('#'));
+    u.erase(0, u.find_first_not_of(" \t\r\n"));
+    u.erase(u.find_last_not_of(" \t\r\n") + 1);
+    if (!u.empty()) urls.push_back(u);
+  }
+  std::fclose(f);
+  if (urls.size() == given) throw UsageError("--url-file " + url_file + " lists no server");
+  return urls;
 }
 
 /// The backend's options, shared by `inpaint` and `fill` (which differ only in how they name
 /// the number of variations).
 void ReadBackendOptions(Args& args, curvature_inpaint::InpaintParams& p) {
-  p.backend = args.Option("--backend", p.backend);
-  std::vector<std::string> urls = args.Options("--url");
-  const std::string url_file = args.Option("--url-file", "");
-  if (!url_file.empty()) {
-    std::FILE* f = std::fopen(url_file.c_str(), "r");
-    if (!f) throw UsageError("cannot read --url-file " + url_file);
-    char line[4096];
-    while (std::fgets(line, sizeof line, f)) {
-      std::string u(line);
-      u = u.substr(0, u.find('#'));
-      u.erase(0, u.find_first_not_of(" \t\r\n"));
-      u.erase(u.find_last_not_of(" \t\r\n") + 1);
-      if (!u.empty()) urls.push_back(u);
-    }
-    std::fclose(f);
-    if (urls.empty()) throw UsageError("--url-file " + url_file + " lists no server");
-  }
+  p.backend = args.Text("--backend", p.backend);
+  const std::vector<std::string> urls = ReadUrls(args);
   if (urls.size() == 1) p.url = urls[0];
   if (urls.size() > 1) p.urls = urls;
   p.per_server = int(args.Integer("--per-server", p.per_server, 1));
-  p.model = args.Option("--model", "");
-  p.prompt = args.Option("--prompt", "");
-  p.negative_prompt = args.Option("--negative-prompt", "");
+  p.model = args.Text("--model", "");
+  p.prompt = args.Text("--prompt", "");
+  p.negative_prompt = args.Text("--negative-prompt", "");
   p.seed = uint32_t(args.Integer("--seed", p.seed, 0));
-  p.workflow_file = args.Option("--workflow", "");
-  const std::string timeout = args.Option("--timeout", "");
-  if (!timeout.empty()) p.http.total_timeout_s = ParsePositive("--timeout", timeout);
+  p.workflow_file = args.Text("--workflow", "");
+  p.http.total_timeout_s = args.Number("--timeout", p.http.total_timeout_s);
   p.http.max_response_bytes = size_t(args.Integer("--max-response-mb", 64, 1)) << 20;
   p.http.max_retries = int(args.Integer("--retries", p.http.max_retries, 0));
-  const std::string detail = args.Option("--detail", "");
-  if (!detail.empty()) p.detail = ParseNonNegative("--detail", detail);
+  p.detail = args.Number("--detail", p.detail, true);
 }
 
-int InpaintCommand(Args& args) {
+int InpaintCommand(Args& args, const Command& command) {
   curvature_inpaint::InpaintParams p;
   ReadBackendOptions(args, p);
   p.variations = int(args.Integer("-n", p.variations, 1));
   p.size = int(args.Integer("--size", 0, 0));
-  const auto files = args.Positional(3);
+  const auto files = args.Files(3, command.synopsis);
   QImage image(QString::fromStdString(files[0])), mask(QString::fromStdString(files[1]));
   if (image.isNull()) throw std::runtime_error(files[0] + ": not a readable image");
   if (mask.isNull()) throw std::runtime_error(files[1] + ": not a readable image");
+  curvature_inpaint::CheckFolderWritable(files[2]);
   std::fprintf(stderr, "inpainting with %s, %d variations\n", p.backend.c_str(), p.variations);
   std::unique_ptr<curvature_inpaint::ServerPool> pool;
   if (!p.urls.empty()) pool = std::make_unique<curvature_inpaint::ServerPool>(p.urls, p.per_server);
@@ -321,46 +206,50 @@ int InpaintCommand(Args& args) {
   return 0;
 }
 
+/// The kinds of variation --pick may name.
+const std::vector<std::string>& PickKinds() {
+  static const std::vector<std::string> kinds{"continuation",     "exemplar", "symmetry",
+                                              "symmetry surface", "creases",  "face",
+                                              "tri-laplacian"};
+  return kinds;
+}
+
+/// One entry of --pick: 0 auto, -1 coarse, k >= 1 variation k; throws UsageError otherwise.
+int PickEntry(const std::string& entry) {
+  if (entry == "auto") return 0;
+  if (entry == "coarse") return -1;
+  char* end = nullptr;
+  const long n = std::strtol(entry.c_str(), &end, 10);
+  if (entry.empty() || *end != '\0' || n < 1 || n > 1000)
+    throw UsageError("--pick: \"" + entry +
+                     "\" is not auto, coarse, a variation number (1 to 1000) or a kind (" +
+                     "continuation, exemplar, symmetry, symmetry surface, creases, face, "
+                     "tri-laplacian)");
+  return int(n);
+}
+
 /// --pick: auto, coarse, a variation number or a kind for every hole, or a comma-separated list
 /// with one entry per hole, each auto, coarse or a number (what `preview` showed).
 void ReadPick(const std::string& pick, curvature_inpaint::HoleFillParams& p) {
-  const std::vector<std::string> kinds{"continuation",     "exemplar", "symmetry",
-                                       "symmetry surface", "creases",  "face",
-                                       "tri-laplacian"};
-  if (std::find(kinds.begin(), kinds.end(), pick) != kinds.end()) {
+  if (std::find(PickKinds().begin(), PickKinds().end(), pick) != PickKinds().end()) {
     p.pick_kind = pick;
     return;
   }
-  auto number = [](const std::string& k) {
-    char* end = nullptr;
-    const long n = std::strtol(k.c_str(), &end, 10);
-    return k.empty() || *end != '\0' || n < 1 || n > 1000 ? 0 : int(n);
-  };
   if (pick.find(',') == std::string::npos) {
-    if (pick == "auto") return;
-    p.pick = pick == "coarse" ? -1 : number(pick);
-    if (p.pick == 0)
-      throw UsageError("--pick needs auto, coarse, a variation number >= 1 or a kind "
-                       "(continuation, exemplar, symmetry, symmetry surface, creases, face, "
-                       "tri-laplacian), or one entry per hole (auto, coarse or a number) "
-                       "separated by commas");
+    p.pick = PickEntry(pick);
     return;
   }
   size_t from = 0;
   for (;;) {
     const size_t comma = pick.find(',', from);
-    const std::string entry = pick.substr(from, comma - from);
-    const int k = entry == "auto" ? 0 : entry == "coarse" ? -1 : number(entry);
-    if (k == 0 && entry != "auto")
-      throw UsageError("--pick: \"" + entry + "\" is not auto, coarse or a variation number >= 1");
-    p.hole_picks.push_back(k);
+    p.hole_picks.push_back(PickEntry(pick.substr(from, comma - from)));
     if (comma == std::string::npos) break;
     from = comma + 1;
   }
 }
 
-/// The options of `fill` that set its parameters (every one but the files, --report and
-/// --oracle), taken out of `args`.
+/// The options of `fill` that set its parameters (every one but the files, --report, --oracle
+/// and the output's flags), taken out of `args`.
 curvature_inpaint::HoleFillParams ReadFillOptions(Args& args) {
   curvature_inpaint::HoleFillParams p;
   const bool detail_given = args.Has("--detail");
@@ -375,32 +264,38 @@ curvature_inpaint::HoleFillParams ReadFillOptions(Args& args) {
   p.exemplar = args.Flag("--exemplar");
   p.creases = !args.Flag("--no-creases");
   p.tri_laplacian = !args.Flag("--no-tri-laplacian");
-  ReadPick(args.Option("--pick", "auto"), p);
-  p.mode = args.Option("--mode", p.mode);
+  ReadPick(args.Text("--pick", "auto"), p);
+  p.mode = args.Text("--mode", p.mode);
   if (p.mode != "direct" && p.mode != "paper") throw UsageError("--mode is direct or paper");
-  const std::string sim = args.Option("--similitude", "");
-  if (!sim.empty()) p.paper.similitude = ParsePositive("--similitude", sim);
-  const std::string tc = args.Option("--transformation-constant", "");
-  if (!tc.empty()) p.paper.transformation_constant = ParsePositive("--transformation-constant", tc);
+  p.paper.similitude = args.Number("--similitude", p.paper.similitude);
+  p.paper.transformation_constant =
+      args.Number("--transformation-constant", p.paper.transformation_constant);
   ReadHoleSelection(args, p.images.coarse);
-  const std::string density = args.Option("--density", "");
-  if (!density.empty()) p.images.coarse.density_alpha = ParsePositive("--density", density);
+  p.images.coarse.density_alpha = args.Number("--density", p.images.coarse.density_alpha);
   p.images.image_size = int(args.Integer("--size", 512, 16));
-  p.images_dir = args.Option("--images", "");
-  p.inpainted_dir = args.Option("--from-images", "");
-  const std::string context = args.Option("--context", "");
-  if (!context.empty()) p.images.segmentation.context = ParsePositive("--context", context);
+  p.images_dir = args.Text("--images", "");
+  p.inpainted_dir = args.Text("--from-images", "");
+  p.images.segmentation.context = args.Number("--context", p.images.segmentation.context);
   return p;
 }
 
-int Fill(Args& args) {
+int Fill(Args& args, const Command& command) {
   const bool density_given = args.Has("--density");
   curvature_inpaint::HoleFillParams p = ReadFillOptions(args);
-  const std::string report = args.Option("--report", "");
-  const std::string oracle_path = args.Option("--oracle", "");
+  const std::string report = args.Text("--report", "");
+  const std::string oracle_path = args.Text("--oracle", "");
   if (!oracle_path.empty() && !density_given)
     p.images.coarse.density_alpha = curvature_inpaint::kOracleDensity;
-  const auto files = args.Positional(2);
+  MeshOutput out = ReadOutputFlags(args);
+  const auto files = args.Files(2, command.synopsis);
+  CheckOutput(out, files[0], files[1]);
+  if (!report.empty()) {
+    if (curvature_inpaint::SameFile(report, files[0]))
+      throw curvature_inpaint::OutputError(report +
+                                           ": is the input scan; give another report file");
+    curvature_inpaint::CheckWritable(curvature_inpaint::WriteTarget(report));
+  }
+  if (!p.images_dir.empty()) curvature_inpaint::CheckFolderWritable(p.images_dir);
   CMeshO m;
   const int mask = curvature_inpaint::LoadMesh(files[0], m);
   CMeshO ground_truth;
@@ -414,25 +309,21 @@ int Fill(Args& args) {
   const auto result = curvature_inpaint::FillHoles(m, p, ProgressToStderr);
   for (const auto& line : curvature_inpaint::DescribeHoleFill(result))
     std::fprintf(stderr, "%s\n", line.c_str());
-  curvature_inpaint::SaveMesh(files[1], m, mask);
-  if (!report.empty()) {
-    std::FILE* f = std::fopen(report.c_str(), "w");
-    const std::string json = curvature_inpaint::HoleFillReportJson(result, p);
-    if (!f || std::fwrite(json.data(), 1, json.size(), f) != json.size() || std::fclose(f) != 0)
-      throw std::runtime_error("cannot write " + report);
-  }
+  SaveOutput(out, m, mask);
+  if (!report.empty())
+    curvature_inpaint::WriteFileAtomically(report,
+                                           curvature_inpaint::HoleFillReportJson(result, p));
+  SayWritten(out, result.coarse, report);
   return 0;
 }
 
 /// The dialog's preview on the command line: every hole's variations and the pick fill would
 /// make, written as pictures; the mesh file is only read. `fill --pick A,B,...` then applies a
 /// choice per hole: the same options and seed give the same variations.
-int Preview(Args& args) {
-  if (args.Has("--images") || args.Has("--report") || args.Has("--oracle"))
-    throw UsageError("preview writes its pictures into DIR; --images, --report and --oracle are "
-                     "fill options");
+int Preview(Args& args, const Command& command) {
   const curvature_inpaint::HoleFillParams p = ReadFillOptions(args);
-  const auto files = args.Positional(2);
+  const auto files = args.Files(2, command.synopsis);
+  curvature_inpaint::CheckFolderWritable(files[1]);
   CMeshO m;
   curvature_inpaint::LoadMesh(files[0], m);
   const auto holes = curvature_inpaint::InpaintHoles(m, p, ProgressToStderr);
@@ -445,7 +336,7 @@ int Preview(Args& args) {
 /// This task's shard: --shard K/N, else a Slurm job array's task (SLURM_ARRAY_TASK_ID less
 /// SLURM_ARRAY_TASK_MIN, of SLURM_ARRAY_TASK_COUNT), else the whole manifest.
 void ReadShard(Args& args, curvature_inpaint::BatchParams& p) {
-  const std::string shard = args.Option("--shard", "");
+  const std::string shard = args.Text("--shard", "");
   if (!shard.empty()) {
     int k = 0, n = 0;
     char extra = 0;
@@ -465,10 +356,10 @@ void ReadShard(Args& args, curvature_inpaint::BatchParams& p) {
   p.shard = k, p.shards = n;
 }
 
-int Batch(Args& args) {
-  const std::string summary = args.Option("--summary", "");
+int Batch(Args& args, const Command& command) {
+  const std::string summary = args.Text("--summary", "");
   if (!summary.empty()) {
-    args.Positional(0);
+    args.Files(0, "no file");
     return curvature_inpaint::SummarizeBatch(summary) ? 1 : 0;
   }
   curvature_inpaint::BatchParams p;
@@ -476,20 +367,18 @@ int Batch(Args& args) {
   ReadShard(args, p);
   const std::vector<std::string> rest = args.Rest();
   if (rest.size() < 2 || rest[0][0] == '-' || rest[1][0] == '-')
-    throw UsageError("batch needs MANIFEST OUTDIR before the fill options");
+    throw UsageError("expected " + std::string(command.synopsis) + " before the fill options");
   p.outdir = rest[1];
   p.options.assign(rest.begin() + 2, rest.end());
-  for (const char* own : {"--report", "--oracle", "--images", "--from-images"})
-    if (std::find(p.options.begin(), p.options.end(), own) != p.options.end())
-      throw UsageError(std::string(own) + " is not a batch option (each scan's result line has "
-                                          "its report)");
   auto parse = [](const std::vector<std::string>& options) {
     Args a(options);
+    a.Check(*curvature_inpaint::cli::FindCommand("batch"));
     curvature_inpaint::HoleFillParams params = ReadFillOptions(a);
-    a.Positional(0);
+    a.Files(0, "no file");
     return params;
   };
   parse(p.options); // a bad option is the whole batch's error, before any scan
+  curvature_inpaint::CheckFolderWritable(p.outdir);
   p.progress_bar = isatty(fileno(stderr));
   const auto scans = curvature_inpaint::ReadManifest(rest[0]);
   const auto done = curvature_inpaint::RunBatch(scans, p, parse);
@@ -498,17 +387,27 @@ int Batch(Args& args) {
   return done.failed ? 1 : 0;
 }
 
-int Info(Args& args) {
+int Info(Args& args, const Command& command) {
   const bool symmetry = args.Flag("--symmetry");
-  const auto files = args.Positional(1);
+  vcg_ext::CoarseFillParams selection;
+  ReadHoleSelection(args, selection);
+  const auto files = args.Files(1, command.synopsis);
   CMeshO m;
   curvature_inpaint::LoadMesh(files[0], m);
   const auto c = curvature_inpaint::CountHoles(m);
+  const auto holes = curvature_inpaint::ListHoles(m, selection);
   std::printf("vertices %d\nfaces %d\nnon_manifold_edges %zu\ninconsistent_edges %zu\nholes %zu\n",
               c.vertices, c.faces, c.non_manifold_edges, c.inconsistent_edges, c.loop_edges.size());
   std::printf("hole_edges");
-  for (int e : c.loop_edges) std::printf(" %d", e);
+  for (const auto& h : holes) std::printf(" %d", h.edges);
   std::printf("\n");
+  const double diagonal = double(m.bbox.Diag());
+  for (const auto& h : holes) {
+    const std::string name = h.number > 0 ? "hole " + std::to_string(h.number) : "left open";
+    std::printf("%s: %d edges, diameter %.6g (%.2g %% of the diagonal), centre %.6g %.6g %.6g\n",
+                name.c_str(), h.edges, h.diameter, diagonal > 0 ? 100 * h.diameter / diagonal : 0.0,
+                h.centre[0], h.centre[1], h.centre[2]);
+  }
   if (symmetry) {
     vcg_ext::CoarseFillResult scan; // nothing filled: every vertex is the scan's
     scan.box = vcg_ext::ComputeUnitBox(m);
@@ -520,47 +419,89 @@ int Info(Args& args) {
   return 0;
 }
 
-int Punch(Args& args) {
+int Punch(Args& args, const Command& command) {
   const long seed = args.Integer("--seed-vertex", -1, 0);
   if (seed < 0) throw UsageError("--seed-vertex is required");
-  const double frac = args.Real("--radius-frac");
-  const auto files = args.Positional(2);
+  if (!args.Has("--radius-frac")) throw UsageError("--radius-frac is required");
+  const double frac = args.Number("--radius-frac", 0);
+  MeshOutput out = ReadOutputFlags(args);
+  const auto files = args.Files(2, command.synopsis);
+  CheckOutput(out, files[0], files[1]);
   CMeshO m;
   const int mask = curvature_inpaint::LoadMesh(files[0], m);
   if (seed >= long(m.vert.size()))
     throw UsageError("--seed-vertex " + std::to_string(seed) + " is not a vertex of " + files[0]);
-  const auto center = m.vert[seed].cP();
+  const auto center = m.vert[size_t(seed)].cP();
   const int removed = vcg_ext::PunchHole(m, center, Scalarm(frac * m.bbox.Diag()));
   std::fprintf(stderr, "removed %d faces\n", removed);
-  curvature_inpaint::SaveMesh(files[1], m, mask);
+  SaveOutput(out, m, mask);
+  std::fprintf(stderr, "wrote %s\n", out.path.c_str());
   return 0;
 }
 
-double Args::Real(const std::string& name) {
-  return ParsePositive(name, Option(name, ""));
+/// Runs `command` on `args` (the words after its name).
+int Run(const Command& command, Args& args) {
+  const std::string name = command.name;
+  // Options that belong to fill and not here get their own reason.
+  if (name == "preview")
+    for (const char* own : {"--report", "--oracle", "--in-place", "--mark-new"})
+      if (args.Has(own))
+        throw UsageError(std::string(own) + " is a fill option: preview writes only pictures");
+  if (name == "batch")
+    for (const char* own : {"--report", "--oracle", "--images", "--from-images"})
+      if (args.Has(own))
+        throw UsageError(std::string(own) +
+                         " is not a batch option (each scan's result line has its report)");
+  args.Check(command);
+  if (name == "fill") return Fill(args, command);
+  if (name == "preview") return Preview(args, command);
+  if (name == "coarse") return Coarse(args, command);
+  if (name == "info") return Info(args, command);
+  if (name == "images") return Images(args, command);
+  if (name == "inpaint") return InpaintCommand(args, command);
+  if (name == "batch") return Batch(args, command);
+  return Punch(args, command);
 }
 
 } // namespace
 
 int main(int argc, char** argv) {
-  Args args(argc, argv);
+  using curvature_inpaint::cli::FindCommand;
+  std::vector<std::string> words(argv + 1, argv + argc);
+  const Command* command = nullptr;
   try {
-    const std::string command = args.Command();
-    if (command == "fill") return Fill(args);
-    if (command == "coarse") return Coarse(args);
-    if (command == "images") return Images(args);
-    if (command == "info") return Info(args);
-    if (command == "batch") return Batch(args);
-    if (command == "inpaint") return InpaintCommand(args);
-    if (command == "punch") return Punch(args);
-    if (command == "preview") return Preview(args);
-    if (command == "-h" || command == "--help" || command == "help") {
-      std::printf("%s", kUsage);
+    if (words.empty()) throw UsageError("no command given");
+    const std::string first = words.front();
+    if (first == "--version") {
+      std::printf("curvature-inpaint %s (built for MeshLab %s)\n", CURVATURE_INPAINT_VERSION,
+                  MESHLAB_VERSION_TEXT);
       return 0;
     }
-    throw UsageError("unknown command \"" + command + "\"");
+    if (first == "-h" || first == "--help" || (first == "help" && words.size() == 1)) {
+      std::printf("%s", curvature_inpaint::cli::ToolHelp().c_str());
+      return 0;
+    }
+    if (first == "help") {
+      command = FindCommand(words[1]);
+      if (!command) throw UsageError("no command \"" + words[1] + "\"");
+      std::printf("%s", curvature_inpaint::cli::CommandHelp(*command).c_str());
+      return 0;
+    }
+    command = FindCommand(first);
+    if (!command) throw UsageError("unknown command \"" + first + "\"");
+    words.erase(words.begin());
+    if (std::find(words.begin(), words.end(), "--help") != words.end() ||
+        std::find(words.begin(), words.end(), "-h") != words.end()) {
+      std::printf("%s", curvature_inpaint::cli::CommandHelp(*command).c_str());
+      return 0;
+    }
+    Args args(words);
+    return Run(*command, args);
   } catch (const UsageError& e) {
-    std::fprintf(stderr, "curvature-inpaint: %s\n%s", e.what(), kUsage);
+    const std::string where = command ? std::string(command->name) + ": " : "";
+    const std::string help = command ? std::string(command->name) + " --help" : "--help";
+    std::fprintf(stderr, "curvature-inpaint: %s%s\nsee 'curvature-inpaint %s'\n", where.c_str(),
+                 e.what(), help.c_str());
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "curvature-inpaint: %s\n", e.what());
