@@ -1,5 +1,7 @@
 #include "curvature_images.h"
 
+#include "montage.h"
+
 #include "json_text.h"
 #include "pipeline.h"
 
@@ -265,27 +267,13 @@ void WriteHoleImages(const std::string& dir, const CurvatureImagesResult& result
 }
 
 void WriteMontage(const std::string& path, const CurvatureImagesResult& result) {
-  const int cell = 256, pad = 8;
-  int rows = 0;
-  for (const auto& hi : result.holes) rows += hi.problem.empty();
-  QImage montage(3 * cell + 4 * pad, std::max(1, rows) * (cell + pad) + pad, QImage::Format_RGB32);
-  montage.fill(QColor(40, 40, 48));
-  QPainter painter(&montage);
-  int row = 0;
-  for (const auto& hi : result.holes) {
-    if (!hi.problem.empty()) continue;
-    const int y = pad + row++ * (cell + pad);
-    QImage checker(cell, cell, QImage::Format_RGB32);
-    for (int j = 0; j < cell; ++j)
-      for (int i = 0; i < cell; ++i)
-        checker.setPixel(i, j, ((i / 16 + j / 16) % 2) ? qRgb(200, 200, 200) : qRgb(150, 150, 150));
-    painter.drawImage(QRect(pad, y, cell, cell), ToQImage(hi.image, false));
-    painter.drawImage(QRect(2 * pad + cell, y, cell, cell), checker);
-    painter.drawImage(QRect(2 * pad + cell, y, cell, cell), ToQImage(hi.image, true));
-    painter.drawImage(QRect(3 * pad + 2 * cell, y, cell, cell), MaskImage(hi.image));
+  std::vector<MontageRow> rows;
+  for (size_t k = 0; k < result.holes.size(); ++k) {
+    const HoleImage& hi = result.holes[k];
+    if (hi.problem.empty())
+      rows.push_back(MakeImagesRow(hi, k, result.coarse.holes[size_t(hi.hole)].boundary_edges));
   }
-  painter.end();
-  Save(montage, path);
+  SaveMontage(rows, path);
 }
 
 std::vector<std::string> DescribeCurvatureImages(const CurvatureImagesResult& result) {

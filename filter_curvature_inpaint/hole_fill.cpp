@@ -4,6 +4,7 @@
 #include "inpaint/curvature_reading.h"
 #include "inpaint/server_pool.h"
 #include "json_text.h"
+#include "montage.h"
 #include "patch_fills.h"
 #include "pipeline.h"
 
@@ -125,6 +126,7 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& 
                                 " holes, and the mesh has " + std::to_string(holes) + " to fill");
   HoleVariations hv;
   hv.images_s = hi.seconds;
+  hv.boundary_edges = ctx.coarse->holes[size_t(hi.hole)].boundary_edges;
   if (!hi.problem.empty()) {
     hv.problem = hi.problem;
     return hv;
@@ -231,6 +233,7 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleFillParams& 
         break;
       }
   }
+  hv.asked = pick > 0 || (!pick_kind.empty() && hv.pick_note.empty());
   return hv;
 }
 
@@ -295,51 +298,17 @@ int FakeHoleThreads(const vcg_ext::CoarseFillResult& coarse, int threads) {
   return std::max(1, vcg_ext::ThreadCount(threads) / std::max(1, coarse.FilledCount()));
 }
 
-/// One row of the montage: coarse, mask, variations (the pick framed), and the final image
-/// where there is one (a preview has none).
-QImage MontageRow(const HoleVariations& hv, int pick, const QImage& final_image) {
-  std::vector<QImage> tiles{hv.image, hv.mask};
-  tiles.insert(tiles.end(), hv.variations.begin(), hv.variations.end());
-  if (!final_image.isNull()) tiles.push_back(final_image);
-  const int cell = 192, pad = 6, cells = int(tiles.size());
-  QImage row(cells * (cell + pad) + pad, cell + 2 * pad, QImage::Format_RGB32);
-  row.fill(QColor(40, 40, 48));
-  QPainter painter(&row);
-  for (int c = 0; c < cells; ++c) {
-    const QRect r(pad + c * (cell + pad), pad, cell, cell);
-    if (pick > 0 && c == pick + 1)
-      painter.fillRect(r.adjusted(-pad / 2, -pad / 2, pad / 2, pad / 2), QColor(255, 255, 255));
-    painter.drawImage(r, tiles[size_t(c)]);
-  }
-  painter.end();
-  return row;
-}
-
 /// Writes hole k's pictures into `dir` as hole_<k+1>_coarse.png, _mask.png, _variation_<j>.png
 /// and, where it has one, _final.png; returns its montage row.
-QImage SaveHoleImages(const HoleVariations& hv, size_t k, int pick, const QImage& final_image,
-                      const std::string& dir) {
+MontageRow SaveHoleImages(const HoleVariations& hv, size_t k, int framed, const std::string& reason,
+                          const QImage& final_image, const std::string& dir) {
   const std::string base = dir + "/hole_" + std::to_string(k + 1);
   SavePng(hv.image, base + "_coarse.png");
   SavePng(hv.mask, base + "_mask.png");
   for (size_t j = 0; j < hv.variations.size(); ++j)
     SavePng(hv.variations[j], base + "_variation_" + std::to_string(j + 1) + ".png");
   if (!final_image.isNull()) SavePng(final_image, base + "_final.png");
-  return MontageRow(hv, pick, final_image);
-}
-
-/// The rows stacked into one picture, left-aligned on the montage's dark background.
-void SaveMontage(const std::vector<QImage>& rows, const std::string& path) {
-  if (rows.empty()) return;
-  int w = 0, h = 0;
-  for (const auto& r : rows) w = std::max(w, r.width()), h += r.height();
-  QImage montage(w, h, QImage::Format_RGB32);
-  montage.fill(QColor(40, 40, 48));
-  QPainter painter(&montage);
-  int y = 0;
-  for (const auto& r : rows) painter.drawImage(0, y, r), y += r.height();
-  painter.end();
-  SavePng(montage, path);
+  return MakeMontageRow(hv, k, framed, reason, final_image);
 }
 
 /// Stages 8-9 for hole k: its variations (given, or from the backend), the pick, and the
@@ -383,6 +352,7 @@ void DeformHole(const HoleImage& hi, size_t k, const vcg_ext::CoarseFillResult& 
   report.symmetry_note = hv.symmetry_note;
   report.crease_note = hv.crease_note;
   report.pick_note = hv.pick_note;
+  report.asked = hv.asked;
   report.mirror_covered = hv.mirror_covered;
   report.mirror_ring_residual = hv.mirror_ring_residual;
   report.validation_s = hv.validation_s;
@@ -626,7 +596,7 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
   struct HoleWork {
     HoleFillReport report;
     std::vector<Eigen::Vector3d> points; ///< the deformed patch; empty: keep the coarse fill
-    QImage montage_row;                  ///< when the images are written
+    MontageRow montage_row;              ///< when the images are written
   };
   std::map<int, HoleWork> work; // by hole; nodes stay put while other threads insert
   std::mutex work_mutex;
@@ -667,8 +637,9 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
     // (its final image is then the coarse one, and no variation is framed).
     if (!params.images_dir.empty() && !hv.variations.empty()) {
       if (final_image.isNull()) final_image = hv.image;
-      w->montage_row =
-          SaveHoleImages(hv, size_t(k), w->report.pick, final_image, params.images_dir);
+      const int framed = w->report.problem.empty() ? w->report.pick : 0;
+      w->montage_row = SaveHoleImages(hv, size_t(k), framed, ChoiceInWords(FactsOf(w->report)),
+                                      final_image, params.images_dir);
     }
     std::vector<uint8_t>().swap(hi.image.rgb);
     std::vector<uint8_t>().swap(hi.image.hole);
@@ -696,14 +667,14 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
       result.symmetry_best = symmetry->best;
       result.symmetry_s = symmetry->seconds;
     }
-    std::vector<QImage> montage_rows;
+    std::vector<MontageRow> montage_rows;
     std::vector<int> moved_fills;            // faces of the fills that moved
     std::unordered_map<int, size_t> hole_of; // fill face -> its hole's report
     for (size_t k = 0; k < images.holes.size(); ++k) {
       const HoleImage& hi = images.holes[k];
       HoleWork& w = work.at(int(k));
       result.holes.push_back(w.report);
-      if (!w.montage_row.isNull()) montage_rows.push_back(w.montage_row);
+      if (!w.montage_row.image.isNull()) montage_rows.push_back(std::move(w.montage_row));
       if (w.points.empty()) continue;
       const std::vector<char>& free = hi.is_new;
       for (size_t i = 0; i < w.points.size(); ++i)
@@ -757,13 +728,15 @@ void SaveVariationImages(const std::vector<HoleVariations>& holes, const std::st
                          int threads) {
   if (!QDir().mkpath(QString::fromStdString(dir))) throw std::runtime_error("cannot create " + dir);
   // PNG encoding is most of the time here: the holes' pictures are written in parallel.
-  std::vector<QImage> rows(holes.size());
+  std::vector<MontageRow> rows(holes.size());
   vcg_ext::ParallelFor(int(holes.size()), threads, [&](int k) {
     const HoleVariations& hv = holes[size_t(k)];
     if (!hv.variations.empty())
-      rows[size_t(k)] = SaveHoleImages(hv, size_t(k), hv.pick, QImage(), dir);
+      rows[size_t(k)] =
+          SaveHoleImages(hv, size_t(k), hv.pick, ChoiceInWords(FactsOf(hv)), QImage(), dir);
   });
-  rows.erase(std::remove_if(rows.begin(), rows.end(), [](const QImage& r) { return r.isNull(); }),
+  rows.erase(std::remove_if(rows.begin(), rows.end(),
+                            [](const MontageRow& r) { return r.image.isNull(); }),
              rows.end());
   SaveMontage(rows, dir + "/montage.png");
 }
@@ -829,6 +802,28 @@ std::vector<std::string> DescribeHoleFill(const HoleFillResult& result) {
                       " % of the fill, its ring within " +
                       QString::number(100 * r.mirror_ring_residual, 'f', 1).toStdString() +
                       " % of the hole's radius";
+  }
+  return lines;
+}
+
+ChoiceFacts FactsOf(const HoleFillReport& r) {
+  return {r.candidates, r.fake_hole_errors, r.choice, r.pick, r.kind,
+          r.asked,      r.pick_note,        r.problem};
+}
+
+ChoiceFacts FactsOf(const HoleVariations& hv) {
+  static const std::string none;
+  const std::string& kind = hv.pick > 0 ? KindOf(hv, size_t(hv.pick - 1)) : none;
+  return {hv.candidates, hv.fake_hole_errors, hv.choice, hv.pick, kind,
+          hv.asked,      hv.pick_note,        hv.problem};
+}
+
+std::vector<std::string> DescribeHolesInWords(const HoleFillResult& result) {
+  std::vector<std::string> lines;
+  for (size_t k = 0; k < result.holes.size(); ++k) {
+    const HoleFillReport& r = result.holes[k];
+    lines.push_back("hole " + std::to_string(k + 1) + " (" + std::to_string(r.boundary_edges) +
+                    " edges): " + ChoiceInWords(FactsOf(r)));
   }
   return lines;
 }

@@ -5,6 +5,7 @@
 
 #include "curvature_images.h"
 #include "ground_truth_image.h"
+#include "hole_words.h"
 #include "inpaint/inpainter.h"
 #include "symmetry_prior.h"
 
@@ -135,6 +136,7 @@ struct HoleFillReport {
   /// -1 where it has none.
   double mirror_covered = -1, mirror_ring_residual = -1;
   std::string problem; ///< why the hole kept its coarse fill; empty if none
+  bool asked = false;  ///< the pick was asked for (a number or a kind), not automatic
 };
 
 /// One hole's inpainting (stages 3-8) as a person previews it and FillHoles applies it.
@@ -166,6 +168,8 @@ struct HoleVariations {
   std::string pick_note;     ///< why the kind asked for was not picked; empty if it was
   double mirror_covered = -1, mirror_ring_residual = -1; ///< as in HoleFillReport
   double images_s = 0, validation_s = 0, inpaint_s = 0;  ///< as in HoleFillReport
+  int boundary_edges = 0;                                ///< of the hole
+  bool asked = false; ///< the pick was asked for (a number or a kind), not automatic
 };
 
 struct HoleFillResult {
@@ -239,6 +243,14 @@ std::string DescribeValidation(const std::vector<std::string>& candidates,
                                int mirror_fake_holes, const std::string& note);
 
 std::vector<std::string> DescribeHoleFill(const HoleFillResult& result);
+
+/// One line per hole in words, "hole 3 (61 edges): the mirror image of the other side, better
+/// than the smooth fill on 4 of 4 test cuts"; the numbers are DescribeHoleFill's.
+std::vector<std::string> DescribeHolesInWords(const HoleFillResult& result);
+
+/// The facts of a hole's choice, for the words of hole_words.h.
+ChoiceFacts FactsOf(const HoleFillReport& hole);
+ChoiceFacts FactsOf(const HoleVariations& hole);
 
 /// The report as JSON (no keys, no URLs with credentials).
 std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParams& params);

@@ -209,7 +209,8 @@ class HoleShapes(TempDirTest):
         of the input moved (only the fill's own vertices are deformed). Returns (info, report)."""
         out, report = self.path("out.off"), self.path("report.json")
         # Detail on every hole (no fake holes choosing): the deformation runs on each shape.
-        r = run([TOOL, "fill", src, out, "--size", "256", "--report", report, "--detail", "1", *options])
+        r = run([TOOL, "fill", src, out, "--size", "256", "--report", report, "--detail", "1",
+                 "--verbose", *options])
         self.assertEqual(r.returncode, 0, r.stderr)
         after = info(out)
         self.assertEqual(after["non_manifold_edges"], 0)
@@ -309,7 +310,8 @@ class DetailAndValidation(TempDirTest):
 
     def fill(self, *options):
         out, report = self.path("out.ply"), self.path("report.json")
-        r = run([TOOL, "fill", self.SAMPLE, out, "--size", "256", "--report", report, *options])
+        r = run([TOOL, "fill", self.SAMPLE, out, "--size", "256", "--report", report, "--verbose",
+                 *options])
         self.assertEqual(r.returncode, 0, r.stderr)
         with open(report) as f:
             return read_binary_ply_xyz(out), json.load(f)["holes"], r.stderr
@@ -466,7 +468,7 @@ class Oracle(TempDirTest):
 
         def fill(*options):
             out, report = self.path("out.ply"), self.path("report.json")
-            r = run([TOOL, "fill", src, out, "--report", report, *options])
+            r = run([TOOL, "fill", src, out, "--report", report, "--verbose", *options])
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertEqual(info(out)["holes"], 0)
             with open(report) as f:

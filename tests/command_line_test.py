@@ -3,14 +3,22 @@ unless asked, one hole numbering, --pick as documented, and the new faces marked
 import json
 import os
 import re
+import shutil
 import signal
 import subprocess
 import unittest
 
+import pngs
 from support import (SOURCE, TOOL, TempDirTest, info, read_binary_ply_face_flags, run, sha256)
 
 SAMPLE = os.path.join(SOURCE, "meshes", "sample_holes.ply")
 COMMANDS = ["fill", "preview", "coarse", "info", "images", "inpaint", "batch", "punch"]
+
+
+def montage_holes(folder):
+    """{hole number: boundary edges} of the rows of the montage in `folder`."""
+    with open(os.path.join(folder, "montage.json")) as f:
+        return {row["hole"]: row["boundary_edges"] for row in json.load(f)["rows"]}
 
 
 def help_options(command):
@@ -173,19 +181,23 @@ class HoleNumbering(TempDirTest):
                 numbered = info(scan, *options)["numbered"]
                 self.assertEqual(sorted(numbered), list(range(1, len(numbered) + 1)))
                 report, images = self.path("report.json"), self.path("images")
+                shutil.rmtree(images, ignore_errors=True)
                 r = run([TOOL, "fill", scan, self.path("out.ply"), "--fake-holes", "0", "--size",
-                         "64", "--report", report, *options])
+                         "64", "--report", report, "--images", images, *options])
                 self.assertEqual(r.returncode, 0, r.stderr)
                 with open(report) as f:
                     holes = json.load(f)["holes"]
                 self.assertEqual({k + 1: h["boundary_edges"] for k, h in enumerate(holes)}, numbered)
                 for k, edges in numbered.items():
-                    self.assertRegex(r.stderr, rf"\ninpaint {k}: {edges} edges")
+                    self.assertIn(f"\nhole {k} ({edges} edges): ", r.stderr)
+                self.assertEqual(montage_holes(images), numbered)
+                shutil.rmtree(images)
                 r = run([TOOL, "images", scan, images, "--size", "32", *options])
                 self.assertEqual(r.returncode, 0, r.stderr)
                 for k, edges in numbered.items():
                     with open(os.path.join(images, f"hole_{k}.json")) as f:
                         self.assertEqual(json.load(f)["boundary_edges"], edges)
+                self.assertEqual(montage_holes(images), numbered)
 
     def test_info_gives_each_holes_size_and_place(self):
         r = run([TOOL, "info", SAMPLE])
@@ -222,11 +234,64 @@ class Pick(TempDirTest):
     def test_a_kind_a_hole_lacks_is_said_in_the_log(self):
         r, _ = self.fill("--pick", "symmetry")
         self.assertEqual(r.returncode, 0, r.stderr)
-        lacking = [l for l in r.stderr.splitlines() if "it has no symmetry variation" in l]
-        having = [l for l in r.stderr.splitlines() if re.match(r"inpaint \d: .* symmetry of", l)]
+        lacking = [l for l in r.stderr.splitlines()
+                   if re.match(r"hole \d \(\d+ edges\): .*\(it has no symmetry variation\)$", l)]
+        having = [l for l in r.stderr.splitlines()
+                  if re.match(r"hole \d \(\d+ edges\): the curvature of the mirror image "
+                              r"\(variation \d\), as asked$", l)]
         self.assertGreater(len(lacking), 0, r.stderr)
         self.assertGreater(len(having), 0, r.stderr)
         self.assertEqual(len(lacking) + len(having), 3)
+
+
+class LogAndMontage(TempDirTest):
+    """A line per hole in words, the numbers with --verbose, and a montage that explains itself."""
+
+    def test_the_log_says_in_words_what_each_hole_got(self):
+        out, images = self.path("out.ply"), self.path("images")
+        r = run([TOOL, "fill", SAMPLE, out, "--images", images])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        lines = [l for l in r.stderr.splitlines() if l.startswith("hole ")]
+        self.assertEqual(len(lines), 3, r.stderr)
+        for k, line in enumerate(lines, 1):
+            self.assertRegex(line, rf"^hole {k} \(\d+ edges\): [a-z ,']+, (better than the smooth fill|"
+                                   r"best) on \d of \d test cuts$")
+        self.assertNotIn("validation 1:", r.stderr)  # the numbers only with --verbose
+        self.assertNotIn("ms", r.stderr)
+        self.assertEqual(r.stderr.splitlines()[-1], f"wrote {out}: 3 holes filled, 0 left open")
+        # The montage frames what the log names, with the same words beneath it.
+        with open(os.path.join(images, "montage.json")) as f:
+            rows = json.load(f)["rows"]
+        for line, row in zip(lines, rows):
+            self.assertEqual(line.split(": ", 1)[1], row["reason"])
+        verbose = run([TOOL, "fill", SAMPLE, out, "--verbose"])
+        self.assertIn("validation 1: on ", verbose.stderr)
+        self.assertRegex(verbose.stderr, r"inpaint 1: \d+ edges, .*deform \d+ ms")
+
+    def test_the_montage_labels_its_rows_and_tiles_and_frames_the_choice(self):
+        pictures = self.path("preview")
+        r = run([TOOL, "preview", SAMPLE, pictures, "--size", "64", "--fake-holes", "0"])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(os.path.join(pictures, "montage.json")) as f:
+            rows = json.load(f)["rows"]
+        with open(os.path.join(pictures, "montage.png"), "rb") as f:
+            width, height, channels, pixels = pngs.decode(f.read())
+        self.assertEqual([row["hole"] for row in rows], [1, 2, 3])
+        for row in rows:
+            captions = [t["caption"] for t in row["tiles"]]
+            self.assertEqual(captions[:2], ["smooth fill", "hole"])
+            # The embedded inpainter's continuations at detail 0 are identical: one tile.
+            self.assertEqual(captions[2], "1-4 continuation")
+            self.assertEqual(row["tiles"][2]["variations"], [1, 4])
+            self.assertRegex(" ".join(captions[3:]), r"^5 tri-laplacian")
+            framed = row["tiles"][row["framed_tile"]]
+            self.assertEqual(framed["variations"], [1, 4])  # the best-scored continuation
+            self.assertEqual(row["reason"], "the inpainted curvature, the best-scored of its variations")
+            # A white frame around the framed tile, none around the others.
+            for tile in row["tiles"]:
+                x, y = tile["x"] - 2, tile["y"] + tile["size"] // 2
+                pixel = tuple(pixels[y][x * channels:x * channels + 3])
+                self.assertEqual(pixel == (255, 255, 255), tile is framed, tile)
 
 
 class MarkNew(TempDirTest):

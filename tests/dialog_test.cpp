@@ -18,6 +18,7 @@
 #include <QTcpServer>
 #include <QTcpSocket>
 #include <QTemporaryDir>
+#include <QToolButton>
 #include <QtTest>
 
 #include <cstdlib>
@@ -55,6 +56,29 @@ private slots:
 
   void init() { QSettings("curvature-inpaint", "hole-fill").clear(); }
 
+  void expert_settings_are_folded_away_with_a_line_each() {
+    HoleFillDialog d(mesh_);
+    d.show();
+    auto* advanced = Find<QWidget>(d, "advancedSettings");
+    QVERIFY(!advanced->isVisible());
+    for (const char* name : {"mode", "similitude", "transformationConstant", "imageSize"}) {
+      QWidget* field = Find<QWidget>(d, name);
+      QVERIFY2(advanced->isAncestorOf(field), name);
+      QVERIFY2(!field->toolTip().isEmpty(), name);
+      // The explanation is on screen beside the field, not only in its tooltip.
+      bool explained = false;
+      for (QLabel* note : field->parentWidget()->findChildren<QLabel*>())
+        explained = explained || note->text() == field->toolTip();
+      QVERIFY2(explained, name);
+    }
+    for (const char* name : {"backend", "variations", "fakeHoles", "maxHoleEdges"})
+      QVERIFY2(!advanced->isAncestorOf(Find<QWidget>(d, name)), name);
+    Find<QToolButton>(d, "advanced")->click();
+    QVERIFY(advanced->isVisible());
+    Find<QSpinBox>(d, "imageSize")->setValue(256);
+    QCOMPARE(d.Params().images.image_size, 256);
+  }
+
   void defaults_per_backend() {
     HoleFillDialog d(mesh_);
     QCOMPARE(Find<QComboBox>(d, "backend")->currentText(), QString("embedded"));
@@ -62,6 +86,8 @@ private slots:
     QCOMPARE(Find<QDoubleSpinBox>(d, "similitude")->value(), 30.0);
     QCOMPARE(Find<QLineEdit>(d, "transformationConstant")->text().toDouble(), 5e-5);
     QCOMPARE(Find<QComboBox>(d, "mode")->currentText(), QString("direct"));
+    QCOMPARE(Find<QSpinBox>(d, "imageSize")->value(), 512);
+    QCOMPARE(d.Params().images.image_size, 512);
     QVERIFY(!Find<QLineEdit>(d, "prompt")->isEnabled());
 
     ChooseBackend(d, "openai");
@@ -165,15 +191,29 @@ private slots:
       else
         QCOMPARE(hole.kinds[size_t(hole.pick - 1)], choice);
     }
-    QVERIFY(Find<QLabel>(d, "validation_1")->text().contains("chose"));
+    // The choice in words; the numbers only in the tooltip, and no score in any caption.
+    const QString choice = Find<QLabel>(d, "validation_1")->text();
+    QVERIFY2(choice.startsWith("Automatic choice: ") &&
+                 choice.contains(QRegularExpression("(better than the smooth fill|best) on \\d of "
+                                                    "\\d test cuts")),
+             qPrintable(choice));
+    QVERIFY(Find<QLabel>(d, "validation_1")->toolTip().contains("chose"));
+    for (int k = 1; k <= 3; ++k) {
+      auto* variations = Find<QListWidget>(d, qPrintable(QString("variations_%1").arg(k)));
+      for (int row = 0; row < variations->count(); ++row)
+        QVERIFY2(!variations->item(row)->text().contains(QRegularExpression("-?0\\.\\d{3}")),
+                 qPrintable(variations->item(row)->text()));
+    }
     QVERIFY(d.windowTitle().contains("3 of 3 holes ready"));
     QVERIFY(Find<QPushButton>(d, "apply")->isEnabled());
 
-    // Click the third variation of hole 1; skip hole 2.
+    // Click the last item of hole 1; skip hole 2.
     auto* list = Find<QListWidget>(d, "variations_1");
-    const QRect third = list->visualItemRect(list->item(2));
-    QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, third.center());
-    QCOMPARE(d.Holes()[0].pick, 3);
+    QListWidgetItem* last = list->item(list->count() - 1);
+    const int last_variation = last->data(Qt::UserRole + 1).toInt() + 1;
+    QCOMPARE(last_variation, int(d.Holes()[0].variations.size()));
+    QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, list->visualItemRect(last).center());
+    QCOMPARE(d.Holes()[0].pick, last_variation);
     Find<QCheckBox>(d, "skip_2")->click();
     QCOMPARE(d.Holes()[1].pick, 0);
     // Hole 3: skipped, then a variation clicked: the click undoes the skip.
@@ -183,7 +223,7 @@ private slots:
     auto* list_3 = Find<QListWidget>(d, "variations_3");
     QTest::mouseClick(list_3->viewport(), Qt::LeftButton, {},
                       list_3->visualItemRect(list_3->item(1)).center());
-    QCOMPARE(d.Holes()[2].pick, 2);
+    QCOMPARE(d.Holes()[2].pick, list_3->item(1)->data(Qt::UserRole + 1).toInt() + 1);
     QVERIFY(!skip_3->isChecked());
 
     // Apply's input deforms a copy of the mesh as chosen: hole 2 keeps its coarse fill.
@@ -191,7 +231,7 @@ private slots:
     curvature_inpaint::CopyMesh(mesh_, applied);
     const auto result = curvature_inpaint::FillHoles(applied, d.Params(), nullptr, &d.Holes());
     QCOMPARE(int(result.holes.size()), 3);
-    QCOMPARE(result.holes[0].pick, 3);
+    QCOMPARE(result.holes[0].pick, last_variation);
     QVERIFY(result.holes[1].problem.find("skipped") != std::string::npos);
     QVERIFY(result.holes[2].problem.empty());
 
@@ -224,20 +264,24 @@ private slots:
              (std::vector<std::string>{"continuation", "continuation", "exemplar", "exemplar",
                                        "tri-laplacian", "symmetry", "symmetry surface", "face"}));
     QCOMPARE(hole.kinds[size_t(hole.pick - 1)], std::string("continuation"));
-    // Each item says its kind; clicking the mirrored surface chooses it.
+    // Each item says its kind; the two continuations, identical at detail 0, are one item;
+    // clicking the mirrored surface chooses it.
     auto* list = Find<QListWidget>(d, "variations_1");
-    QCOMPARE(list->count(), 8);
-    QVERIFY(list->item(2)->text().contains("exemplar"));
-    QVERIFY(list->item(4)->text().contains("tri-laplacian"));
-    QVERIFY(list->item(5)->text().contains("symmetry"));
-    QCOMPARE(list->item(6)->data(Qt::UserRole).toString(), QString("symmetry surface"));
-    for (int row : {5, 6})
+    QCOMPARE(hole.variations[0], hole.variations[1]);
+    QCOMPARE(list->count(), 7);
+    QVERIFY2(list->item(0)->text().startsWith("1-2: continuation (auto)"),
+             qPrintable(list->item(0)->text()));
+    QVERIFY(list->item(1)->text().contains("exemplar"));
+    QVERIFY(list->item(3)->text().contains("tri-laplacian"));
+    QVERIFY(list->item(4)->text().contains("symmetry"));
+    QCOMPARE(list->item(5)->data(Qt::UserRole).toString(), QString("symmetry surface"));
+    for (int row : {4, 5})
       QVERIFY2(list->item(row)->toolTip().contains("mirror image, which covers 100 % of the fill"),
                qPrintable(list->item(row)->toolTip()));
-    QVERIFY(list->item(4)->toolTip().isEmpty());
-    QVERIFY(list->item(7)->text().contains("face"));
+    QVERIFY(list->item(3)->toolTip().isEmpty());
+    QVERIFY(list->item(6)->text().contains("face"));
     QTest::mouseClick(list->viewport(), Qt::LeftButton, {},
-                      list->visualItemRect(list->item(6)).center());
+                      list->visualItemRect(list->item(5)).center());
     QCOMPARE(d.Holes()[0].pick, 7);
     // Apply's input: the hole takes the mirrored surface, bump and all.
     CMeshO applied;

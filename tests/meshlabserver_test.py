@@ -102,6 +102,9 @@ class MeshlabServer(TempDirTest):
         r = self.meshlabserver(src, out, script)
         self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
         self.assertIn("inpaint 1: none: asked to keep its coarse fill", r.stdout + r.stderr)
+        # And in words, for the person reading MeshLab's log.
+        self.assertRegex(r.stdout + r.stderr,
+                         r"hole 1 \(\d+ edges\): kept the smooth fill: asked to keep its coarse fill")
         self.assertEqual(info(out)["holes"], 0)
         coarse = read_binary_ply_xyz(out)
         self.assertEqual(coarse[:n], filled["0"][:n])

@@ -107,6 +107,8 @@ std::vector<Command> MakeCommands() {
        "them.",
        Join({kFill,
              {{"--report", "FILE.json", "write what was done to each hole, as JSON"},
+              {"--verbose", "",
+               "log the numbers too: the test cuts' errors, the scores, the times per stage"},
               {"--oracle", "GT",
                "benchmarks: deform to the curvature of GT, the mesh before its holes were cut"}},
              kOutput})},

@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <strings.h>
 #include <memory>
 #include <string>
 #include <unistd.h>
@@ -286,6 +287,7 @@ int Fill(Args& args, const Command& command) {
   const std::string oracle_path = args.Text("--oracle", "");
   if (!oracle_path.empty() && !density_given)
     p.images.coarse.density_alpha = curvature_inpaint::kOracleDensity;
+  const bool verbose = args.Flag("--verbose");
   MeshOutput out = ReadOutputFlags(args);
   const auto files = args.Files(2, command.synopsis);
   CheckOutput(out, files[0], files[1]);
@@ -307,7 +309,11 @@ int Fill(Args& args, const Command& command) {
   }
   p.measure_detail = !report.empty() || oracle;
   const auto result = curvature_inpaint::FillHoles(m, p, ProgressToStderr);
+  // A line per hole in words; the numbers (the coarse fill's, the test cuts' errors, the
+  // scores, the times) with --verbose, and a warning always.
   for (const auto& line : curvature_inpaint::DescribeHoleFill(result))
+    if (verbose || line.compare(0, 8, "warning:") == 0) std::fprintf(stderr, "%s\n", line.c_str());
+  for (const auto& line : curvature_inpaint::DescribeHolesInWords(result))
     std::fprintf(stderr, "%s\n", line.c_str());
   SaveOutput(out, m, mask);
   if (!report.empty())

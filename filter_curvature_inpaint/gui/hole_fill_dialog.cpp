@@ -8,6 +8,7 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QToolButton>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -75,6 +76,63 @@ QPixmap Thumbnail(const QImage& image) {
 
 QString Key(const QString& backend, const char* field) {
   return backend + "/" + field;
+}
+
+/// Where a list item keeps the variations it stands for (0-based, first and last).
+constexpr int kFirstVariation = Qt::UserRole + 1;
+constexpr int kLastVariation = Qt::UserRole + 2;
+
+/// A run of variations of one kind with the same picture, shown once.
+struct VariationGroup {
+  int first = 0, last = 0; ///< 0-based
+  std::string kind;
+};
+
+std::vector<VariationGroup> GroupVariations(const HoleVariations& hv) {
+  std::vector<VariationGroup> groups;
+  for (size_t j = 0; j < hv.variations.size(); ++j) {
+    const std::string kind = j < hv.kinds.size() ? hv.kinds[j] : "continuation";
+    if (!groups.empty() && groups.back().kind == kind &&
+        hv.variations[size_t(groups.back().first)] == hv.variations[j]) {
+      groups.back().last = int(j);
+      continue;
+    }
+    groups.push_back({int(j), int(j), kind});
+  }
+  return groups;
+}
+
+/// The validation candidate a variation was tried as: its kind, or for the inpainted
+/// continuations the detail amplitude they have; -1 where it was not tried.
+int CandidateOf(const HoleVariations& hv, const std::string& kind) {
+  const std::string name =
+      kind == "continuation" ? "detail " + QString::number(hv.detail, 'g', 3).toStdString() : kind;
+  const auto it = std::find(hv.candidates.begin(), hv.candidates.end(), name);
+  return it == hv.candidates.end() ? -1 : int(it - hv.candidates.begin());
+}
+
+/// An item's caption: its numbers and kind, and where the hole was validated how the kind did
+/// on the test cuts, in words ("5: tri-laplacian (auto)\nbetter than the smooth fill on 6 of 6
+/// test cuts").
+QString Caption(const HoleVariations& hv, const VariationGroup& g, bool automatic) {
+  QString caption = g.first == g.last ? QString::number(g.first + 1)
+                                      : QString("%1-%2").arg(g.first + 1).arg(g.last + 1);
+  caption += ": " + QString::fromStdString(g.kind) + (automatic ? " (auto)" : "");
+  const int c = CandidateOf(hv, g.kind);
+  if (c >= 0) {
+    const std::string words = TestCutsInWords(hv.candidates, hv.fake_hole_errors, size_t(c));
+    if (!words.empty()) caption += "\n" + QString::fromStdString(words);
+  }
+  return caption;
+}
+
+/// The list row that shows variation `j` (0-based).
+int RowOf(const QListWidget* list, int j) {
+  for (int row = 0; row < list->count(); ++row)
+    if (list->item(row)->data(kFirstVariation).toInt() <= j &&
+        j <= list->item(row)->data(kLastVariation).toInt())
+      return row;
+  return -1;
 }
 
 } // namespace
@@ -173,24 +231,61 @@ HoleFillDialog::HoleFillDialog(const CMeshO& mesh, QWidget* parent)
                              "only its tangents, chosen automatically where the fake holes "
                              "validate it.");
   form->addRow("Tri-&Laplacian", tri_laplacian_);
+  // The settings few people need, folded away: each with a line that says what it does.
+  auto* advanced_form = new QFormLayout;
+  auto add_advanced = [advanced_form](const QString& label, QWidget* field, const QString& line) {
+    auto* explained = new QWidget;
+    auto* column = new QVBoxLayout(explained);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->addWidget(field);
+    auto* note = new QLabel(line);
+    note->setWordWrap(true);
+    note->setEnabled(false); // greyed: an explanation, not a value
+    column->addWidget(note);
+    field->setToolTip(line);
+    advanced_form->addRow(label, explained);
+  };
+  mode_ = new QComboBox;
+  mode_->setObjectName("mode");
+  mode_->addItems({"direct", "paper"});
+  add_advanced("M&ode", mode_,
+               "How the fill follows its image: direct solves for the image's curvature at once "
+               "(faster, closer); paper takes the paper's small steps along the normals.");
   similitude_ = new QDoubleSpinBox;
   similitude_->setObjectName("similitude");
   similitude_->setRange(1, 255);
   similitude_->setValue(30);
-  similitude_->setToolTip("Paper mode: a vertex moves when its colour differs from the image's "
-                          "by more than this in any channel (of 255; the paper's 30).");
-  form->addRow("&Similitude", similitude_);
+  add_advanced("&Similitude", similitude_,
+               "Paper mode: a vertex moves while its colour differs from the image's by more "
+               "than this in any channel (of 255; the paper's 30).");
   transformation_constant_ = new QLineEdit("5e-05");
   transformation_constant_->setObjectName("transformationConstant");
-  transformation_constant_->setToolTip("Paper mode: the step along the normal, as a fraction "
-                                       "of the mesh's bounding box (the paper's 0.00005).");
-  form->addRow("&Transformation constant", transformation_constant_);
-  mode_ = new QComboBox;
-  mode_->setObjectName("mode");
-  mode_->addItems({"direct", "paper"});
-  mode_->setToolTip("direct: solve once for the image's curvature (faster, the benchmark's "
-                    "best); paper: small steps along the normals, as in the paper.");
-  form->addRow("M&ode", mode_);
+  add_advanced("&Transformation constant", transformation_constant_,
+               "Paper mode: each step along the normal, as a fraction of the mesh's bounding "
+               "box (the paper's 0.00005).");
+  image_size_ = new QSpinBox;
+  image_size_->setObjectName("imageSize");
+  image_size_->setRange(64, 2048);
+  image_size_->setSingleStep(64);
+  image_size_->setValue(512);
+  image_size_->setSuffix(" px");
+  add_advanced("Image si&ze", image_size_,
+               "The curvature images' side: larger keeps finer detail and takes longer.");
+  auto* advanced = new QWidget;
+  advanced->setObjectName("advancedSettings");
+  advanced->setLayout(advanced_form);
+  advanced->setVisible(false);
+  auto* advanced_toggle = new QToolButton;
+  advanced_toggle->setObjectName("advanced");
+  advanced_toggle->setText("Advanced");
+  advanced_toggle->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+  advanced_toggle->setArrowType(Qt::RightArrow);
+  advanced_toggle->setCheckable(true);
+  advanced_toggle->setAutoRaise(true);
+  connect(advanced_toggle, &QToolButton::toggled, this, [advanced, advanced_toggle](bool open) {
+    advanced->setVisible(open);
+    advanced_toggle->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
+  });
   max_hole_edges_ = new QSpinBox;
   max_hole_edges_->setObjectName("maxHoleEdges");
   max_hole_edges_->setRange(0, 1000000);
@@ -236,7 +331,10 @@ HoleFillDialog::HoleFillDialog(const CMeshO& mesh, QWidget* parent)
   scroll->setMinimumSize(4 * (kThumbnail + 24) + 2 * kThumbnail, kThumbnail + 120);
 
   auto* settings = new QGroupBox("Settings");
-  settings->setLayout(form);
+  auto* settings_column = new QVBoxLayout(settings);
+  settings_column->addLayout(form);
+  settings_column->addWidget(advanced_toggle);
+  settings_column->addWidget(advanced);
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(settings);
   layout->addLayout(buttons);
@@ -281,7 +379,7 @@ HoleFillParams HoleFillDialog::Params() const {
   p.images.coarse.max_hole_edges = max_hole_edges_->value();
   p.images.coarse.selected_only = selected_only_->isChecked();
   p.images.coarse.keep_longest_open = keep_longest_open_->isChecked();
-  p.images.image_size = 512;
+  p.images.image_size = image_size_->value();
   return p;
 }
 
@@ -350,6 +448,7 @@ void HoleFillDialog::LoadSettings() {
   transformation_constant_->setText(s.value("transformation_constant", "5e-05").toString());
   const int m = mode_->findText(s.value("mode", "direct").toString());
   mode_->setCurrentIndex(m < 0 ? 0 : m);
+  image_size_->setValue(s.value("image_size", 512).toInt());
   max_hole_edges_->setValue(s.value("max_hole_edges", 0).toInt());
   selected_only_->setChecked(s.value("selected_only", false).toBool());
   keep_longest_open_->setChecked(s.value("keep_longest_open", false).toBool());
@@ -374,6 +473,7 @@ void HoleFillDialog::SaveSettings() const {
   s.setValue("similitude", similitude_->value());
   s.setValue("transformation_constant", transformation_constant_->text());
   s.setValue("mode", mode_->currentText());
+  s.setValue("image_size", image_size_->value());
   s.setValue("max_hole_edges", max_hole_edges_->value());
   s.setValue("selected_only", selected_only_->isChecked());
   s.setValue("keep_longest_open", keep_longest_open_->isChecked());
@@ -490,15 +590,17 @@ void HoleFillDialog::ShowHoles() {
     auto* row = new QHBoxLayout;
     column->addLayout(row);
     if (!hv.candidates.empty() || !hv.validation_note.empty()) {
+      // The choice in words; the test cuts' numbers for whoever wants them, in the tooltip.
       auto* validation =
-          new QLabel("Validation " + QString::fromStdString(DescribeValidation(
-                                         hv.candidates, hv.validation_errors, hv.choice,
-                                         hv.fake_holes, hv.mirror_fake_holes, hv.validation_note)));
+          new QLabel("Automatic choice: " + QString::fromStdString(ChoiceInWords(FactsOf(hv))));
       validation->setObjectName(QString("validation_%1").arg(k + 1));
       validation->setWordWrap(true);
-      validation->setToolTip("Each way to fill this hole, tried on holes of its size cut into the "
-                             "known surface near it: the distance to the surface cut out. The "
-                             "automatic choice is the closest.");
+      validation->setToolTip(
+          "Each way to fill this hole was tried on holes of its size cut into the known surface "
+          "near it (test cuts); the automatic choice came closest to the surface cut out.\n" +
+          QString::fromStdString(DescribeValidation(hv.candidates, hv.validation_errors, hv.choice,
+                                                    hv.fake_holes, hv.mirror_fake_holes,
+                                                    hv.validation_note)));
       column->addWidget(validation);
     }
     if (!hv.problem.empty()) {
@@ -520,43 +622,45 @@ void HoleFillDialog::ShowHoles() {
     list->setWrapping(false);
     list->setMovement(QListView::Static);
     list->setMinimumHeight(kThumbnail + 48);
+    list->setWordWrap(true);
+    list->setGridSize(QSize(kThumbnail + 24, kThumbnail + 64));
+    list->setMinimumHeight(kThumbnail + 80);
     // The automatic pick: the validated choice or the best-scored continuation, or none (Skip)
     // where the coarse fill validated best.
     const bool coarse_chosen = CoarseValidatedBest(hv);
     const int best = AutomaticPick(hv) - 1;
-    for (size_t j = 0; j < hv.variations.size(); ++j) {
+    for (const VariationGroup& group : GroupVariations(hv)) {
       // The same picture when selected: the selection shows as the frame and the bold label,
       // not as a tint that would make the variation look different.
+      const QImage& image = hv.variations[size_t(group.first)];
       QIcon icon;
-      icon.addPixmap(Thumbnail(hv.variations[j]), QIcon::Normal);
-      icon.addPixmap(Thumbnail(hv.variations[j]), QIcon::Selected);
-      // A prior's variation says which ("symmetry"); the continuations show their score.
-      const bool prior = j < hv.kinds.size() && hv.kinds[j] != "continuation";
-      auto* item = new QListWidgetItem(icon, QString("%1: %2%3")
-                                                 .arg(j + 1)
-                                                 .arg(prior ? QString::fromStdString(hv.kinds[j])
-                                                            : QString::number(hv.scores[j], 'f', 5))
-                                                 .arg(int(j) == best ? " (auto)" : ""));
-      item->setData(Qt::UserRole, prior ? QString::fromStdString(hv.kinds[j]) : "continuation");
+      icon.addPixmap(Thumbnail(image), QIcon::Normal);
+      icon.addPixmap(Thumbnail(image), QIcon::Selected);
+      const bool automatic = group.first <= best && best <= group.last;
+      auto* item = new QListWidgetItem(icon, Caption(hv, group, automatic));
+      item->setData(Qt::UserRole, QString::fromStdString(group.kind));
+      item->setData(kFirstVariation, group.first);
+      item->setData(kLastVariation, group.last);
       // How far to trust a mirror image: how much of the fill it covers and how far the two
       // halves differ around the hole.
-      if (j < hv.kinds.size() && hv.kinds[j].rfind("symmetry", 0) == 0 && hv.mirror_covered >= 0)
+      if (group.kind.rfind("symmetry", 0) == 0 && hv.mirror_covered >= 0)
         item->setToolTip(QString("From the object's mirror image, which covers %1 % of the fill; "
                                  "around the hole the two halves differ by %2 % of its radius.")
                              .arg(std::lround(100 * hv.mirror_covered))
                              .arg(100 * hv.mirror_ring_residual, 0, 'f', 1));
-      if (int(j) == best) {
+      if (automatic) {
         QFont f = item->font();
         f.setBold(true);
         item->setFont(f);
       }
       list->addItem(item);
     }
-    if (hv.pick > 0) list->setCurrentRow(hv.pick - 1);
-    connect(list, &QListWidget::itemDoubleClicked, this, [this, k, list](QListWidgetItem* item) {
-      const QImage& image = holes_[k].variations[size_t(list->row(item))];
+    if (hv.pick > 0) list->setCurrentRow(RowOf(list, hv.pick - 1));
+    connect(list, &QListWidget::itemDoubleClicked, this, [this, k](QListWidgetItem* item) {
+      const int j = item->data(kFirstVariation).toInt();
+      const QImage& image = holes_[k].variations[size_t(j)];
       QDialog big(this);
-      big.setWindowTitle(QString("Hole %1, variation %2").arg(k + 1).arg(list->row(item) + 1));
+      big.setWindowTitle(QString("Hole %1, variation %2").arg(k + 1).arg(j + 1));
       auto* label = new QLabel;
       label->setPixmap(QPixmap::fromImage(image.scaled(512, 512, Qt::KeepAspectRatio)));
       auto* l = new QVBoxLayout(&big);
@@ -574,9 +678,9 @@ void HoleFillDialog::ShowHoles() {
     skip->setToolTip("Leave this hole with its smooth coarse fill.");
     skip->setChecked(hv.pick == 0);
     // Choosing a variation undoes a skip (also the automatic one); skipping clears the choice.
-    connect(list, &QListWidget::currentRowChanged, this, [this, k, skip](int row) {
+    connect(list, &QListWidget::currentRowChanged, this, [this, k, skip, list](int row) {
       if (row < 0) return;
-      holes_[k].pick = row + 1;
+      holes_[k].pick = list->item(row)->data(kFirstVariation).toInt() + 1;
       skip->setChecked(false);
     });
     connect(skip, &QCheckBox::toggled, this, [this, k, list](bool on) {
@@ -584,8 +688,8 @@ void HoleFillDialog::ShowHoles() {
         holes_[k].pick = 0;
         list->setCurrentRow(-1);
       } else if (holes_[k].pick == 0) {
-        holes_[k].pick = std::max(1, list->currentRow() + 1);
-        list->setCurrentRow(holes_[k].pick - 1);
+        list->setCurrentRow(std::max(0, list->currentRow()));
+        holes_[k].pick = list->currentItem()->data(kFirstVariation).toInt() + 1;
       }
     });
     side->addWidget(reroll);

@@ -91,6 +91,7 @@ private:
   QDoubleSpinBox* similitude_;
   QLineEdit* transformation_constant_;
   QComboBox* mode_;
+  QSpinBox* image_size_;
   QSpinBox* max_hole_edges_;
   QCheckBox* selected_only_;
   QCheckBox* keep_longest_open_;

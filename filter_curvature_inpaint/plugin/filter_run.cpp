@@ -51,7 +51,10 @@ void RunHoleFill(MeshModel& mm, const HoleFillParams& p, const FilterEnvironment
                  const std::vector<HoleVariations>* chosen = nullptr) {
   try {
     const auto result = FillHoles(mm.cm, p, env.progress, chosen);
+    // The numbers first, then a line per hole in words, which ends the log where a person
+    // looks first.
     for (const std::string& line : DescribeHoleFill(result)) env.log(line);
+    for (const std::string& line : DescribeHolesInWords(result)) env.log(line);
   } catch (const std::exception& e) {
     throw FilterError(std::string("Curvature Inpaint Hole Fill: ") + e.what() +
                       ". The mesh was not changed.");
