@@ -1,6 +1,7 @@
 #include "batch.h"
 
 #include "mesh_io.h"
+#include "output_files.h"
 #include "pipeline.h"
 
 #include <vcg_ext/parallel_for.h>
@@ -296,10 +297,7 @@ int SummarizeBatch(const std::string& outdir) {
               Seconds(seconds[seconds.size() / 2]).c_str(), Seconds(seconds.back()).c_str());
   if (failed) std::printf("\n| failed scan | reason |\n|---|---|\n%s", failures.str().c_str());
   const std::string path = outdir + "/summary.csv";
-  std::FILE* f = std::fopen(path.c_str(), "w");
-  const std::string text = csv.str();
-  if (!f || std::fwrite(text.data(), 1, text.size(), f) != text.size() || std::fclose(f) != 0)
-    throw std::runtime_error("cannot write " + path);
+  WriteFileAtomically(path, csv.str());
   std::fprintf(stderr, "wrote %s\n", path.c_str());
   return failed;
 }

@@ -1,8 +1,8 @@
 #include "curvature_images.h"
 
-#include "montage.h"
-
 #include "json_text.h"
+#include "montage.h"
+#include "output_files.h"
 #include "pipeline.h"
 
 #include <vcg_ext/curvature_colormap.h>
@@ -19,6 +19,7 @@
 #include <cstdio>
 #include <fstream>
 #include <numeric>
+#include <sstream>
 #include <stdexcept>
 #include <unordered_map>
 #include <unordered_set>
@@ -228,8 +229,7 @@ QImage MaskImage(const vcg_ext::CurvatureImage& img) {
 namespace {
 
 void Save(const QImage& image, const std::string& path) {
-  if (!image.save(QString::fromStdString(path), "PNG"))
-    throw std::runtime_error("cannot write " + path);
+  SavePngAtomically(image, path);
 }
 
 } // namespace
@@ -243,7 +243,7 @@ void WriteHoleImages(const std::string& dir, const CurvatureImagesResult& result
     Save(ToQImage(hi.image, false), base + "_curvature.png");
     Save(ToQImage(hi.image, true), base + "_rgba.png");
     Save(MaskImage(hi.image), base + "_mask.png");
-    std::ofstream json(base + ".json");
+    std::ostringstream json;
     json.precision(9);
     json << "{\n  \"hole\": " << k + 1
          << ",\n  \"boundary_edges\": " << result.coarse.holes[hi.hole].boundary_edges
@@ -262,7 +262,7 @@ void WriteHoleImages(const std::string& dir, const CurvatureImagesResult& result
            << ", \"curvature\": " << JsonNumber{hi.curvature[v]}
            << ", \"value\": " << JsonNumber{hi.value[v]} << "}";
     json << "\n  ]\n}\n";
-    if (!json) throw std::runtime_error("cannot write " + base + ".json");
+    WriteFileAtomically(base + ".json", json.str());
   }
 }
 

@@ -5,6 +5,7 @@
 #include "inpaint/server_pool.h"
 #include "json_text.h"
 #include "montage.h"
+#include "output_files.h"
 #include "patch_fills.h"
 #include "pipeline.h"
 
@@ -58,8 +59,7 @@ void CheckMatchesFolder(const std::string& json_path, const HoleImage& hi) {
 }
 
 void SavePng(const QImage& image, const std::string& path) {
-  if (!image.save(QString::fromStdString(path), "PNG"))
-    throw std::runtime_error("cannot write " + path);
+  SavePngAtomically(image, path);
 }
 
 /// Scores every variation and takes the given pick, or the automatic one.

@@ -2,13 +2,13 @@
 
 #include "bitmap_font.h"
 #include "json_text.h"
+#include "output_files.h"
 
 #include <vcg_ext/curvature_colormap.h>
 
 #include <QPainter>
 
 #include <algorithm>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -171,11 +171,8 @@ void SaveMontage(const std::vector<MontageRow>& rows, const std::string& path) {
   }
   json << "\n  ]\n}\n";
   painter.end();
-  if (!montage.save(QString::fromStdString(path), "PNG"))
-    throw std::runtime_error("cannot write " + path);
-  const std::string index = path.substr(0, path.rfind('.')) + ".json";
-  std::ofstream out(index);
-  if (!(out << json.str()) || !out.flush()) throw std::runtime_error("cannot write " + index);
+  SavePngAtomically(montage, path);
+  WriteFileAtomically(path.substr(0, path.rfind('.')) + ".json", json.str());
 }
 
 } // namespace curvature_inpaint

@@ -1,5 +1,8 @@
 #include "output_files.h"
 
+#include <QBuffer>
+#include <QByteArray>
+
 #include <climits>
 #include <cstdio>
 #include <cstdlib>
@@ -78,6 +81,14 @@ void WriteFileAtomically(const std::string& path, const std::string& bytes) {
     std::remove(tmp.c_str());
     throw OutputError(path + ": cannot write the file");
   }
+}
+
+void SavePngAtomically(const QImage& image, const std::string& path) {
+  QByteArray png;
+  QBuffer buffer(&png);
+  if (!buffer.open(QIODevice::WriteOnly) || !image.save(&buffer, "PNG"))
+    throw OutputError(path + ": cannot encode the image");
+  WriteFileAtomically(path, std::string(png.constData(), size_t(png.size())));
 }
 
 } // namespace curvature_inpaint

@@ -3,6 +3,8 @@
 // target, renamed into place), so that a failure or a kill loses nothing.
 #pragma once
 
+#include <QImage>
+
 #include <stdexcept>
 #include <string>
 
@@ -37,5 +39,9 @@ void CheckFolderWritable(const std::string& dir);
 /// Writes `bytes` to `path` whole or not at all: into a temporary file beside it, renamed into
 /// place. Throws OutputError.
 void WriteFileAtomically(const std::string& path, const std::string& bytes);
+
+/// Writes `image` as a PNG to `path`, whole or not at all (see WriteFileAtomically). Throws
+/// OutputError.
+void SavePngAtomically(const QImage& image, const std::string& path);
 
 } // namespace curvature_inpaint

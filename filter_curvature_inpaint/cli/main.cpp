@@ -200,8 +200,7 @@ int InpaintCommand(Args& args, const Command& command) {
     throw std::runtime_error("cannot create " + files[2]);
   for (size_t i = 0; i < variations.size(); ++i) {
     const std::string path = files[2] + "/variation_" + std::to_string(i + 1) + ".png";
-    if (!variations[i].save(QString::fromStdString(path), "PNG"))
-      throw std::runtime_error("cannot write " + path);
+    curvature_inpaint::SavePngAtomically(variations[i], path);
     std::fprintf(stderr, "wrote %s\n", path.c_str());
   }
   return 0;
