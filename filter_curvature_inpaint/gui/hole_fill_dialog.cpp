@@ -689,7 +689,8 @@ void HoleFillDialog::ShowHoles() {
         list->setCurrentRow(-1);
       } else if (holes_[k].pick == 0) {
         list->setCurrentRow(std::max(0, list->currentRow()));
-        holes_[k].pick = list->currentItem()->data(kFirstVariation).toInt() + 1;
+        if (list->currentItem())
+          holes_[k].pick = list->currentItem()->data(kFirstVariation).toInt() + 1;
       }
     });
     side->addWidget(reroll);
