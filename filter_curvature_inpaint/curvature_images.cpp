@@ -226,23 +226,15 @@ QImage MaskImage(const vcg_ext::CurvatureImage& img) {
   return q;
 }
 
-namespace {
-
-void Save(const QImage& image, const std::string& path) {
-  SavePngAtomically(image, path);
-}
-
-} // namespace
-
 void WriteHoleImages(const std::string& dir, const CurvatureImagesResult& result) {
   if (!QDir().mkpath(QString::fromStdString(dir))) throw std::runtime_error("cannot create " + dir);
   for (size_t k = 0; k < result.holes.size(); ++k) {
     const HoleImage& hi = result.holes[k];
     if (!hi.problem.empty()) continue;
     const std::string base = dir + "/hole_" + std::to_string(k + 1);
-    Save(ToQImage(hi.image, false), base + "_curvature.png");
-    Save(ToQImage(hi.image, true), base + "_rgba.png");
-    Save(MaskImage(hi.image), base + "_mask.png");
+    SavePngAtomically(ToQImage(hi.image, false), base + "_curvature.png");
+    SavePngAtomically(ToQImage(hi.image, true), base + "_rgba.png");
+    SavePngAtomically(MaskImage(hi.image), base + "_mask.png");
     std::ostringstream json;
     json.precision(9);
     json << "{\n  \"hole\": " << k + 1

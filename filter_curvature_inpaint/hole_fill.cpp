@@ -58,10 +58,6 @@ void CheckMatchesFolder(const std::string& json_path, const HoleImage& hi) {
                                          "filter scale and image size");
 }
 
-void SavePng(const QImage& image, const std::string& path) {
-  SavePngAtomically(image, path);
-}
-
 /// Scores every variation and takes the given pick, or the automatic one.
 void ScoreAndPick(HoleVariations& hv, int pick) {
   hv.scores.clear();
@@ -303,11 +299,11 @@ int FakeHoleThreads(const vcg_ext::CoarseFillResult& coarse, int threads) {
 MontageRow SaveHoleImages(const HoleVariations& hv, size_t k, int framed, const std::string& reason,
                           const QImage& final_image, const std::string& dir) {
   const std::string base = dir + "/hole_" + std::to_string(k + 1);
-  SavePng(hv.image, base + "_coarse.png");
-  SavePng(hv.mask, base + "_mask.png");
+  SavePngAtomically(hv.image, base + "_coarse.png");
+  SavePngAtomically(hv.mask, base + "_mask.png");
   for (size_t j = 0; j < hv.variations.size(); ++j)
-    SavePng(hv.variations[j], base + "_variation_" + std::to_string(j + 1) + ".png");
-  if (!final_image.isNull()) SavePng(final_image, base + "_final.png");
+    SavePngAtomically(hv.variations[j], base + "_variation_" + std::to_string(j + 1) + ".png");
+  if (!final_image.isNull()) SavePngAtomically(final_image, base + "_final.png");
   return MakeMontageRow(hv, k, framed, reason, final_image);
 }
 
@@ -804,6 +800,20 @@ std::vector<std::string> DescribeHoleFill(const HoleFillResult& result) {
                       " % of the hole's radius";
   }
   return lines;
+}
+
+std::vector<VariationRun> VariationRuns(const HoleVariations& hv) {
+  std::vector<VariationRun> runs;
+  for (size_t j = 0; j < hv.variations.size(); ++j) {
+    const std::string& kind = KindOf(hv, j);
+    if (!runs.empty() && runs.back().kind == kind &&
+        hv.variations[size_t(runs.back().first)] == hv.variations[j]) {
+      runs.back().last = int(j);
+      continue;
+    }
+    runs.push_back({int(j), int(j), kind});
+  }
+  return runs;
 }
 
 ChoiceFacts FactsOf(const HoleFillReport& r) {

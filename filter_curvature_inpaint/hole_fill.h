@@ -185,6 +185,14 @@ struct HoleFillResult {
 /// Throws vcg_ext::InvalidParameterError naming the first parameter out of its range.
 void CheckHoleFillParams(const HoleFillParams& params);
 
+/// A run of variations of one kind with the same picture (the continuations at detail 0),
+/// which the montage and the dialog show once.
+struct VariationRun {
+  int first = 0, last = 0; ///< 0-based
+  std::string kind;
+};
+std::vector<VariationRun> VariationRuns(const HoleVariations& hole);
+
 /// Whether FillHoles and InpaintHoles validate each hole on fake holes with these parameters
 /// (the embedded backend, fake holes asked for, no oracle and no hand-inpainted folder).
 bool ValidatesOnFakeHoles(const HoleFillParams& params);

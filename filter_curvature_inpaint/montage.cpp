@@ -36,20 +36,11 @@ struct Tile {
 /// ("1-4 continuation").
 std::vector<Tile> VariationTiles(const HoleVariations& hv) {
   std::vector<Tile> tiles;
-  for (size_t j = 0; j < hv.variations.size(); ++j) {
-    const std::string kind = j < hv.kinds.size() ? hv.kinds[j] : "continuation";
-    Tile* previous = tiles.empty() ? nullptr : &tiles.back();
-    if (previous && previous->caption == kind && previous->image == hv.variations[j]) {
-      previous->last = int(j) + 1;
-      continue;
-    }
-    tiles.push_back({hv.variations[j], kind, int(j) + 1, int(j) + 1});
-  }
-  for (Tile& t : tiles) {
-    const std::string numbers = t.first == t.last
-                                    ? std::to_string(t.first)
-                                    : std::to_string(t.first) + "-" + std::to_string(t.last);
-    t.caption = numbers + " " + t.caption;
+  for (const VariationRun& run : VariationRuns(hv)) {
+    const int first = run.first + 1, last = run.last + 1;
+    const std::string numbers =
+        first == last ? std::to_string(first) : std::to_string(first) + "-" + std::to_string(last);
+    tiles.push_back({hv.variations[size_t(run.first)], numbers + " " + run.kind, first, last});
   }
   return tiles;
 }

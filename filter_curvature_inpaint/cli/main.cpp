@@ -61,7 +61,7 @@ bool ProgressToStderr(const int, const char* message) {
 struct MeshOutput {
   bool in_place = false; ///< the user allows the output to be the input
   bool mark_new = false; ///< the new faces are written selected
-  std::string input, path;
+  std::string path;
 };
 
 /// Takes --in-place and --mark-new out of `args`.
@@ -75,7 +75,7 @@ MeshOutput ReadOutputFlags(Args& args) {
 /// Checks OUT before any work is done: its format, its folder, and that it is not the input
 /// unless --in-place. Throws UsageError or OutputError.
 void CheckOutput(MeshOutput& out, const std::string& input, const std::string& path) {
-  out.input = input, out.path = path;
+  out.path = path;
   curvature_inpaint::CheckMeshFormat(path);
   if (out.mark_new && (path.size() < 4 || strcasecmp(path.c_str() + path.size() - 4, ".ply") != 0))
     throw UsageError("--mark-new needs a .ply output (the other formats keep no selection)");
@@ -220,11 +220,13 @@ int PickEntry(const std::string& entry) {
   if (entry == "coarse") return -1;
   char* end = nullptr;
   const long n = std::strtol(entry.c_str(), &end, 10);
-  if (entry.empty() || *end != '\0' || n < 1 || n > 1000)
+  if (entry.empty() || *end != '\0' || n < 1 || n > 1000) {
+    std::string kinds;
+    for (const std::string& kind : PickKinds()) kinds += (kinds.empty() ? "" : ", ") + kind;
     throw UsageError("--pick: \"" + entry +
-                     "\" is not auto, coarse, a variation number (1 to 1000) or a kind (" +
-                     "continuation, exemplar, symmetry, symmetry surface, creases, face, "
-                     "tri-laplacian)");
+                     "\" is not auto, coarse, a variation number (1 to 1000) or a kind (" + kinds +
+                     ")");
+  }
   return int(n);
 }
 

@@ -82,26 +82,6 @@ QString Key(const QString& backend, const char* field) {
 constexpr int kFirstVariation = Qt::UserRole + 1;
 constexpr int kLastVariation = Qt::UserRole + 2;
 
-/// A run of variations of one kind with the same picture, shown once.
-struct VariationGroup {
-  int first = 0, last = 0; ///< 0-based
-  std::string kind;
-};
-
-std::vector<VariationGroup> GroupVariations(const HoleVariations& hv) {
-  std::vector<VariationGroup> groups;
-  for (size_t j = 0; j < hv.variations.size(); ++j) {
-    const std::string kind = j < hv.kinds.size() ? hv.kinds[j] : "continuation";
-    if (!groups.empty() && groups.back().kind == kind &&
-        hv.variations[size_t(groups.back().first)] == hv.variations[j]) {
-      groups.back().last = int(j);
-      continue;
-    }
-    groups.push_back({int(j), int(j), kind});
-  }
-  return groups;
-}
-
 /// The validation candidate a variation was tried as: its kind, or for the inpainted
 /// continuations the detail amplitude they have; -1 where it was not tried.
 int CandidateOf(const HoleVariations& hv, const std::string& kind) {
@@ -114,7 +94,7 @@ int CandidateOf(const HoleVariations& hv, const std::string& kind) {
 /// An item's caption: its numbers and kind, and where the hole was validated how the kind did
 /// on the test cuts, in words ("5: tri-laplacian (auto)\nbetter than the smooth fill on 6 of 6
 /// test cuts").
-QString Caption(const HoleVariations& hv, const VariationGroup& g, bool automatic) {
+QString Caption(const HoleVariations& hv, const VariationRun& g, bool automatic) {
   QString caption = g.first == g.last ? QString::number(g.first + 1)
                                       : QString("%1-%2").arg(g.first + 1).arg(g.last + 1);
   caption += ": " + QString::fromStdString(g.kind) + (automatic ? " (auto)" : "");
@@ -629,7 +609,7 @@ void HoleFillDialog::ShowHoles() {
     // where the coarse fill validated best.
     const bool coarse_chosen = CoarseValidatedBest(hv);
     const int best = AutomaticPick(hv) - 1;
-    for (const VariationGroup& group : GroupVariations(hv)) {
+    for (const VariationRun& group : VariationRuns(hv)) {
       // The same picture when selected: the selection shows as the frame and the bold label,
       // not as a tint that would make the variation look different.
       const QImage& image = hv.variations[size_t(group.first)];
