@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets with clang, AddressSanitizer and UndefinedBehaviorSanitizer
-# into build-fuzz/ and runs each from the seeds in fuzz/corpus/<target>/:
-#   run-fuzz.sh SECONDS     explore for SECONDS per target (new inputs kept in build-fuzz/corpus/)
+# Runs each libFuzzer target (built with clang, AddressSanitizer and UndefinedBehaviorSanitizer by
+# scripts/build-sanitized.sh, into build-sanitize/) from the seeds in fuzz/corpus/<target>/:
+#   run-fuzz.sh SECONDS     explore for SECONDS per target (new inputs kept in build-sanitize/corpus/)
 #   run-fuzz.sh --runs N    N inputs per target from a fixed seed: the same run every time (CI)
-# A crash leaves its input in build-fuzz/ and fails the script.
+# A crash leaves its input in build-sanitize/ and fails the script.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 if [ "${1:-}" = "--runs" ]; then
@@ -13,22 +13,12 @@ else
   limit=(-max_total_time="${1:-20}")
   fresh=0
 fi
-bash "$root/scripts/setup-debian.sh"
-if ! dpkg-query -W -f='${Status}\n' clang 2>/dev/null | grep -q '^install ok installed$'; then
-  if [ "$(id -u)" -eq 0 ]; then sudo=(); else sudo=(sudo); fi
-  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends clang >/dev/null
-fi
-flags="-fsanitize=fuzzer-no-link,address,undefined -fsanitize=float-cast-overflow -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g"
-cmake -S "$root" -B "$root/build-fuzz" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
-  -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
-  -DCURVATURE_INPAINT_FUZZ=ON -DBUILD_TESTING=OFF >/dev/null
-cmake --build "$root/build-fuzz" -j2 --target fuzz_backend_responses fuzz_coarse_fill fuzz_filter_parameters fuzz_mesh_file
+bash "$root/scripts/build-sanitized.sh"
 # Any allocation far beyond what an input of 64 kB can justify fails as std::bad_alloc, which
 # the product reports as an error, instead of exhausting the machine.
 export ASAN_OPTIONS=detect_leaks=0:allocator_may_return_null=1:max_allocation_size_mb=2048
 export UBSAN_OPTIONS=print_stacktrace=1
-cd "$root/build-fuzz"
+cd "$root/build-sanitize"
 for target in fuzz_backend_responses fuzz_coarse_fill fuzz_filter_parameters fuzz_mesh_file; do
   # A deterministic run starts from the shipped seeds alone.
   if [ "$fresh" = 1 ]; then rm -rf "corpus/$target"; fi
@@ -36,6 +26,6 @@ for target in fuzz_backend_responses fuzz_coarse_fill fuzz_filter_parameters fuz
   echo "fuzz: $target ${limit[*]}" >&2
   "./bin/$target" "${limit[@]}" -max_len=65536 -timeout=20 -rss_limit_mb=4096 -malloc_limit_mb=65536 \
     -print_final_stats=1 "corpus/$target" "$root/fuzz/corpus/$target" 2>"$target.log" ||
-    { tail -60 "$target.log" >&2; echo "fuzz: $target failed; see build-fuzz/$target.log" >&2; exit 1; }
+    { tail -60 "$target.log" >&2; echo "fuzz: $target failed; see build-sanitize/$target.log" >&2; exit 1; }
   grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$target.log" | sed "s/^/$target: /" >&2
 done

@@ -16,7 +16,7 @@ packages=(
   xvfb xauth xdotool x11-apps
   python3
   slurm-wlm munge
-  debootstrap
+  debootstrap lintian man-db
 )
 
 as_root() {

@@ -2,9 +2,11 @@
 # Makes the Debian roots in which the plugin is built and tested for the newer MeshLab releases
 # (sid for 2025.07, trixie for 2022.02): debootstrap, then Debian's meshlab, Xvfb and the build
 # dependencies inside, then `apt-get source` for that release's headers, vcglib and filter_mls,
-# unpacked into third_party/meshlab-<release>/. Idempotent: a second run returns in seconds.
+# unpacked into third_party/meshlab-<release>/. For 2020.09 a bookworm root with Xvfb only, where
+# the package test installs the package and what it pulls in (tests/package_test.py).
+# Idempotent: a second run returns in seconds.
 # Needs root (debootstrap, chroot) and scripts/setup-debian.sh run first.
-# Usage: setup-meshlab-roots.sh [RELEASE...]   (default: every release in meshlab-releases.sh)
+# Usage: setup-meshlab-roots.sh [RELEASE...]   (default: PACKAGE_RELEASES in meshlab-releases.sh)
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 # shellcheck source=meshlab-releases.sh
@@ -22,8 +24,10 @@ fi
 packages=(
   meshlab xvfb xauth xdotool x11-apps python3
   g++ make cmake qtbase5-dev libqt5opengl5-dev libglew-dev libglu1-mesa-dev libeigen3-dev
-  libcurl4-openssl-dev
+  libcurl4-openssl-dev dpkg-dev
 )
+# Where nothing is built: only what runs meshlabserver's display and the tests' helpers.
+package_test_packages=(xvfb xauth python3)
 apt_options=(-o Acquire::Check-Valid-Until=false -o APT::Sandbox::User=root)
 
 run_quiet() {
@@ -38,7 +42,10 @@ setup_root() {
   suite=$(meshlab_suite "$release")
   dir=$(meshlab_root_dir "$release")
   stamp="$dir/.curvature-inpaint-root"
-  want="$suite: ${packages[*]} + meshlab's recommends"
+  local wanted=("${packages[@]}")
+  [ "$release" != 2020.09 ] || wanted=("${package_test_packages[@]}")
+  want="$suite: ${wanted[*]}"
+  [ "$release" = 2020.09 ] || want="$want + meshlab's recommends"
   if [ "$(cat "$stamp" 2>/dev/null)" != "$want" ]; then
     mirror=$(debian_mirror)
     if [ ! -f "$dir/.debootstrap-complete" ]; then
@@ -53,17 +60,19 @@ deb $mirror $suite main
 deb-src $mirror $suite main
 SOURCES
     printf 'Acquire::Check-Valid-Until "false";\n' >"$dir/etc/apt/apt.conf.d/50curvature-inpaint"
-    echo "setup: installing meshlab and the build dependencies in $suite" >&2
+    echo "setup: installing ${wanted[*]} in $suite" >&2
     run_quiet "$root/scripts/in-meshlab-root.sh" "$release" apt-get "${apt_options[@]}" update -qq
     run_quiet "$root/scripts/in-meshlab-root.sh" "$release" env DEBIAN_FRONTEND=noninteractive \
-      apt-get "${apt_options[@]}" install -y -qq --no-install-recommends "${packages[@]}"
+      apt-get "${apt_options[@]}" install -y -qq --no-install-recommends "${wanted[@]}"
     # MeshLab's own plugins need its recommended libraries (muparser, qhull, lib3ds, OpenCTM):
     # without them it opens with a modal "Error while loading plugins." that blocks the GUI.
-    run_quiet "$root/scripts/in-meshlab-root.sh" "$release" bash -c "
+    [ "$release" = 2020.09 ] || run_quiet "$root/scripts/in-meshlab-root.sh" "$release" bash -c "
       recommends=\$(dpkg-query -W -f='\${Recommends}' meshlab | tr ',' '\\n' | sed 's/|.*//; s/(.*)//; s/ //g')
       DEBIAN_FRONTEND=noninteractive apt-get ${apt_options[*]} install -y -qq --no-install-recommends \$recommends"
     echo "$want" >"$stamp"
   fi
+  # 2020.09's source is bookworm's, unpacked by scripts/setup-debian.sh.
+  [ "$release" != 2020.09 ] || return 0
 
   local src="$root/third_party/meshlab-$release"
   if [ ! -f "$src/src/common/plugins/interfaces/filter_plugin.h" ]; then
@@ -92,7 +101,7 @@ SOURCES
 }
 
 releases=("$@")
-[ ${#releases[@]} -gt 0 ] || releases=("${MESHLAB_RELEASES[@]}")
+[ ${#releases[@]} -gt 0 ] || releases=("${PACKAGE_RELEASES[@]}")
 for release in "${releases[@]}"; do
   setup_root "$release"
 done

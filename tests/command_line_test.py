@@ -72,6 +72,28 @@ class Help(TempDirTest):
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertRegex(r.stdout, r"^curvature-inpaint \d+\.\d+\.\d+ \(built for MeshLab \d{4}\.\d{2}\)\n$")
 
+    def test_the_manual_page_has_every_command_and_option_the_help_has(self):
+        r = run([TOOL, "--man"])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        page = r.stdout
+        self.assertTrue(page.startswith(".TH CURVATURE-INPAINT 1 "), page[:80])
+        sections = re.split(r"(?m)^\.SS ", page)
+        for command in COMMANDS:
+            with self.subTest(command=command):
+                section = next(s for s in sections if s.startswith(f'"{command} '))
+                for option, valued in help_options(command):
+                    roff = option.replace("-", "\\-")
+                    self.assertRegex(section, rf"(?m)^\.BI? \"?{re.escape(roff)}[\" \n]")
+        # man renders it without a warning.
+        page_file = self.path("curvature-inpaint.1")
+        with open(page_file, "w") as f:
+            f.write(page)
+        shown = subprocess.run(["man", "--warnings", "-l", page_file], capture_output=True, text=True,
+                               env=dict(os.environ, MANWIDTH="80"), timeout=60)
+        self.assertEqual(shown.returncode, 0, shown.stderr)
+        self.assertEqual(shown.stderr, "")
+        self.assertIn("fill IN OUT", shown.stdout)
+
     def test_an_option_takes_its_value_after_an_equals_sign(self):
         out = self.path("out.ply")
         r = run([TOOL, "coarse", SAMPLE, out, "--max-hole-edges=40"])

@@ -20,6 +20,9 @@ SKIPPED = {
     "sudo cp ": "changes the machine's MeshLab; tests/plugin_test.py loads the plugin from a prefix",
     "P=$HOME/meshlab-ci": "starts the MeshLab GUI; tests/gui_test.py does, under Xvfb",
     "xvfb-run -a meshlabserver": "needs the plugin installed; tests/meshlabserver_test.py runs the scripts",
+    "sudo apt ": "changes the machine's packages; tests/package_test.py installs and removes each package in "
+                 "a Debian root of its release",
+    "bash scripts/package.sh": "the test run makes the packages; tests/package_test.py checks them",
 }
 
 

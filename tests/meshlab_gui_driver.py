@@ -3,7 +3,8 @@ of its release: installs the plugin in MeshLab's per-user plugin folder, opens a
 of the product's filters through its dialog, exports the mesh and prints MeshLab's log. Exits 1
 with the reason (and a screenshot) when MeshLab refuses the plugin or a dialog never appears.
 
-usage: meshlab_gui_driver.py coarse-hole-fill|hole-fill|hole-fill-cancelled RELEASE PLUGIN MESH OUT SCREENSHOTS"""
+usage: meshlab_gui_driver.py coarse-hole-fill|hole-fill|hole-fill-cancelled RELEASE PLUGIN MESH OUT SCREENSHOTS
+PLUGIN "installed": the plugin a package installed where MeshLab loads its own."""
 import os
 import shutil
 import subprocess
@@ -24,7 +25,8 @@ def install_plugin(home, release, plugin):
     data = os.path.join(home, "data")
     folder = os.path.join(data, "VCG", "MeshLab_64bit_fp", "MeshLabExtraPlugins", release)
     os.makedirs(folder)
-    shutil.copy(plugin, folder)
+    if plugin != "installed":
+        shutil.copy(plugin, folder)
     return data
 
 

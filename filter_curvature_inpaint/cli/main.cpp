@@ -6,6 +6,7 @@
 #include "hole_fill.h"
 #include "inpaint/inpainter.h"
 #include "inpaint/server_pool.h"
+#include "manual_page.h"
 #include "mesh_io.h"
 #include "output_files.h"
 #include "pipeline.h"
@@ -482,6 +483,11 @@ int main(int argc, char** argv) {
     if (first == "--version") {
       std::printf("curvature-inpaint %s (built for MeshLab %s)\n", CURVATURE_INPAINT_VERSION,
                   MESHLAB_VERSION_TEXT);
+      return 0;
+    }
+    // For the build, which installs the manual page; the page itself names every command.
+    if (first == "--man") {
+      std::printf("%s", curvature_inpaint::cli::ManualPage(CURVATURE_INPAINT_VERSION).c_str());
       return 0;
     }
     if (first == "-h" || first == "--help" || (first == "help" && words.size() == 1)) {
