@@ -3,8 +3,8 @@
 #   build-sanitized.sh            the unit tests and the libFuzzer targets, once for both, into
 #                                 build-sanitize/ (scripts/run-sanitizers.sh, run-fuzz.sh --runs)
 #   build-sanitized.sh --explore  the libFuzzer targets alone into build-fuzz/, for exploring runs
-# The shared build records edge coverage only: libFuzzer's comparison tracing makes the whole
-# method about three times slower, which the unit tests would pay too. The exploring build has it.
+# The shared build records edge coverage only: libFuzzer's comparison tracing makes the unit tests
+# twice as slow (docs/robustness.md). The exploring build has it.
 # -O2 with line tables only: the reports keep their file and line.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)

@@ -102,7 +102,13 @@ SOURCES
 
 releases=("$@")
 [ ${#releases[@]} -gt 0 ] || releases=("${PACKAGE_RELEASES[@]}")
+# The roots are made side by side: each mostly waits on downloads and the disk.
+pids=()
 for release in "${releases[@]}"; do
-  setup_root "$release"
+  setup_root "$release" &
+  pids+=($!)
 done
+failed=0
+for pid in "${pids[@]}"; do wait "$pid" || failed=1; done
+[ "$failed" = 0 ] || { echo "setup: a Debian root could not be made (above)" >&2; exit 1; }
 echo "setup: ready (Debian roots for MeshLab ${releases[*]})" >&2

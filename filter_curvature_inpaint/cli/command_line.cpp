@@ -232,25 +232,26 @@ std::string HelpLine(const std::string& head, const std::string& help) {
          Wrap(help, column);
 }
 
-/// The description's paragraphs (split at blank lines), each wrapped.
-std::string Paragraphs(const std::string& description) {
-  std::string text;
+std::vector<std::string> Paragraphs(const std::string& description) {
+  std::vector<std::string> paragraphs;
   size_t from = 0;
   while (from < description.size()) {
     size_t end = description.find("\n\n", from);
     if (end == std::string::npos) end = description.size();
     std::string paragraph = description.substr(from, end - from);
     std::replace(paragraph.begin(), paragraph.end(), '\n', ' ');
-    text += (text.empty() ? "" : "\n") + Wrap(paragraph, 0);
+    paragraphs.push_back(paragraph);
     from = end + 2;
   }
-  return text;
+  return paragraphs;
 }
 
 std::string CommandHelp(const Command& command) {
   std::string text = "usage: curvature-inpaint " + std::string(command.name) + " " +
-                     command.synopsis + " [options]\n\n" + Paragraphs(command.description) +
-                     "\noptions:\n";
+                     command.synopsis + " [options]\n\n";
+  const std::vector<std::string> paragraphs = Paragraphs(command.description);
+  for (size_t i = 0; i < paragraphs.size(); ++i) text += (i ? "\n" : "") + Wrap(paragraphs[i], 0);
+  text += "\noptions:\n";
   for (const Option& o : command.options)
     text += HelpLine("  " + std::string(o.name) + (TakesValue(o) ? " " + std::string(o.value) : ""),
                      o.help);

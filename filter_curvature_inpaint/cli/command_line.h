@@ -38,6 +38,9 @@ const std::vector<Command>& Commands();
 /// The command called `name`, or nullptr.
 const Command* FindCommand(const std::string& name);
 
+/// A command's description as paragraphs (split at its blank lines), each on one line.
+std::vector<std::string> Paragraphs(const std::string& description);
+
 /// The help of one command (its synopsis, description and every option it accepts).
 std::string CommandHelp(const Command& command);
 

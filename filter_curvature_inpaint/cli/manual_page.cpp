@@ -1,7 +1,5 @@
 #include "manual_page.h"
 
-#include <algorithm>
-
 #include "command_line.h"
 
 namespace curvature_inpaint {
@@ -24,24 +22,11 @@ std::string OptionName(const std::string& name) {
   return out;
 }
 
-/// The description's paragraphs (split at blank lines), each on one line.
-std::string Paragraphs(const std::string& description) {
-  std::string text;
-  size_t from = 0;
-  while (from < description.size()) {
-    size_t end = description.find("\n\n", from);
-    if (end == std::string::npos) end = description.size();
-    std::string paragraph = description.substr(from, end - from);
-    std::replace(paragraph.begin(), paragraph.end(), '\n', ' ');
-    text += (text.empty() ? "" : ".PP\n") + Roff(paragraph) + "\n";
-    from = end + 2;
-  }
-  return text;
-}
-
 std::string CommandSection(const Command& command) {
-  std::string text = ".SS \"" + std::string(command.name) + " " + command.synopsis + "\"\n" +
-                     Paragraphs(command.description);
+  std::string text = ".SS \"" + std::string(command.name) + " " + command.synopsis + "\"\n";
+  const std::vector<std::string> paragraphs = Paragraphs(command.description);
+  for (size_t i = 0; i < paragraphs.size(); ++i)
+    text += (i ? ".PP\n" : "") + Roff(paragraphs[i]) + "\n";
   for (const Option& o : command.options) {
     text += *o.value ? ".TP\n.BI \"" + OptionName(o.name) + " \" " + o.value
                      : ".TP\n.B " + OptionName(o.name);
