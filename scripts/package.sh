@@ -3,13 +3,13 @@
 # meshlab), 2022.02 and 2025.07 from build-<release>/ inside their Debian roots. Run
 # scripts/build.sh and scripts/build-for-meshlab.sh first (scripts/run-tests.sh does).
 # The maintainer is $DEBFULLNAME <$DEBEMAIL> when set, else the last commit's author.
-# Usage: package.sh [RELEASE...]   (default: 2020.09 and every release in meshlab-releases.sh)
+# Usage: package.sh [RELEASE...]   (default: PACKAGE_RELEASES in meshlab-releases.sh)
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 # shellcheck source=meshlab-releases.sh
 . "$root/scripts/meshlab-releases.sh"
 releases=("$@")
-[ ${#releases[@]} -gt 0 ] || releases=(2020.09 "${MESHLAB_RELEASES[@]}")
+[ ${#releases[@]} -gt 0 ] || releases=("${PACKAGE_RELEASES[@]}")
 
 if [ -n "${DEBEMAIL:-}" ]; then
   maintainer="${DEBFULLNAME:-Curvature Inpaint Hole Fill} <$DEBEMAIL>"
