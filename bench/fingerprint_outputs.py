@@ -10,9 +10,10 @@ without its times and its progress lines, whose order depends on the threads.
 
 usage: bench/fingerprint_outputs.py record FILE [--holes sample,table,dev] [--keep DIR]
        bench/fingerprint_outputs.py compare FILE [--holes ...] [--keep DIR]
-  record   writes the fingerprints into FILE (JSON)
-  compare  fingerprints the current build the same way and lists every output that differs from
-           FILE; exit status 1 if any does
+  record   writes the fingerprints into FILE (JSON), after each mesh: a record cut short keeps
+           the meshes it did
+  compare  fingerprints the current build the same way, on the meshes FILE holds, and lists
+           every output that differs from FILE; exit status 1 if any does
 --holes picks the sets (default: all three). --keep DIR keeps the outputs to look at.
 Run it before a change (record) and after it (compare), on the same machine, with the tool
 built by scripts/build.sh (CURVATURE_INPAINT_TOOL names another)."""
@@ -100,27 +101,39 @@ def fingerprint(mesh, work):
     return result
 
 
-def meshes(sets, tmp):
-    """(label, holed mesh) of each set asked for."""
-    if "sample" in sets:
+def meshes(sets, tmp, wanted=None):
+    """(label, holed mesh) of each set asked for (of those in `wanted`, when given)."""
+    if "sample" in sets and (wanted is None or "sample" in wanted):
         yield "sample", SAMPLE
     for split in ("tuning", "test", "dev"):
         if ("table" if split != "dev" else "dev") not in sets:
             continue
         for mesh, seed, frac in holes(split):
-            _, holed, _ = punch(tmp, mesh, seed, frac)
-            yield f"{split} {mesh} {seed}", holed
+            label = f"{split} {mesh} {seed}"
+            if wanted is None or label in wanted:
+                _, holed, _ = punch(tmp, mesh, seed, frac)
+                yield label, holed
 
 
-def run(sets, keep):
+def save(prints, path):
+    with open(path + ".part", "w") as f:
+        json.dump(prints, f, indent=1, sort_keys=True)
+    os.replace(path + ".part", path)
+
+
+def run(sets, keep, wanted=None, record=None):
+    """{label: fingerprint} of each mesh of `sets` (of those in `wanted`, when given); with
+    `record`, saved there after each mesh, so that a record cut short keeps what it did."""
     tmp = tempfile.mkdtemp(prefix="fingerprint-")
     try:
         prints = {}
-        for label, mesh in meshes(sets, tmp):
+        for label, mesh in meshes(sets, tmp, wanted):
             work = os.path.join(keep or tmp, re.sub(r"\W+", "_", label))
             shutil.rmtree(work, ignore_errors=True)
             os.makedirs(work)
             prints[label] = fingerprint(mesh, work)
+            if record:
+                save(prints, record)
             print(f"fingerprint: {label}", file=sys.stderr, flush=True)
         return prints
     finally:
@@ -155,20 +168,18 @@ def main():
     if args.action == "compare":
         with open(args.file) as f:
             before = json.load(f)
-    prints = run(sets, args.keep)
     if args.action == "record":
-        with open(args.file + ".part", "w") as f:
-            json.dump(prints, f, indent=1, sort_keys=True)
-        os.replace(args.file + ".part", args.file)
+        prints = run(sets, args.keep, record=args.file)
         print(f"fingerprint: {sum(len(c) for p in prints.values() for c in p.values())} outputs "
               f"of {len(prints)} meshes recorded in {args.file}")
         return 0
+    prints = run(sets, args.keep, wanted=set(before))
     before = {k: v for k, v in before.items() if k in prints}
     found = list(differences(before, prints))
     for line in found:
         print(line)
     print(f"fingerprint: {len(found)} of {sum(len(c) for p in prints.values() for c in p.values())} "
-          f"outputs differ from {args.file}")
+          f"outputs of {len(prints)} meshes differ from {args.file}")
     return 1 if found else 0
 
 

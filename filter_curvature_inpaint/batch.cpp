@@ -211,12 +211,13 @@ BatchSummary RunBatch(const std::vector<BatchScan>& all, const BatchParams& para
           const HoleFillReport& r = result.holes[k];
           QJsonObject h;
           h.insert("hole", int(k + 1));
-          h.insert("kind", r.problem.empty() ? QString::fromStdString(r.kind) : "coarse");
-          if (r.choice >= 0) {
-            h.insert("choice", QString::fromStdString(r.candidates[size_t(r.choice)]));
+          const ValidationRecord& v = r.choice.validation;
+          h.insert("kind", r.choice.problem.empty() ? QString::fromStdString(r.kind) : "coarse");
+          if (v.chosen >= 0) {
+            h.insert("choice", QString::fromStdString(v.candidates[size_t(v.chosen)]));
             QJsonObject errors;
-            for (size_t c = 0; c < r.candidates.size(); ++c)
-              errors.insert(QString::fromStdString(r.candidates[c]), r.validation_errors[c]);
+            for (size_t c = 0; c < v.candidates.size(); ++c)
+              errors.insert(QString::fromStdString(v.candidates[c]), v.errors[c]);
             h.insert("validation", errors);
           }
           holes.append(h);

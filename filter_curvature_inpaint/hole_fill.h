@@ -7,6 +7,7 @@
 #include "ground_truth_image.h"
 #include "hole_words.h"
 #include "inpaint/inpainter.h"
+#include "hole_records.h"
 #include "symmetry_prior.h"
 
 #include <vcg_ext/crease_fill.h>
@@ -98,78 +99,48 @@ struct HoleFillParams {
   bool measure_detail = false;
 };
 
+/// Stage 9's record for one hole.
+struct DeformationRecord {
+  int iterations = 0;         ///< deformation solves (direct) or steps (paper)
+  int backoffs = 0;           ///< halvings towards the coarse fill that undid a fold or crossing
+  std::vector<int> differing; ///< paper mode: differing vertices per step
+  double max_move = 0;        ///< unit-box units
+};
+
+/// What the fill did with one hole, and why.
 struct HoleFillReport {
   int hole = 0; ///< index into the coarse result's holes
   int boundary_edges = 0;
   int new_vertices = 0;
-  std::vector<double> scores;     ///< per variation: higher is better
-  std::vector<std::string> kinds; ///< per variation (see HoleVariations::kinds)
-  int pick = 0;                   ///< 1-based
-  int iterations = 0;             ///< deformation solves (direct) or steps (paper)
-  int backoffs = 0;           ///< halvings towards the coarse fill that undid a fold or crossing
-  std::string kind;           ///< of the variation picked (see HoleVariations::kinds)
-  int crease_flips = 0;       ///< fill edges flipped onto the fill's creases
-  std::vector<int> differing; ///< paper mode: differing vertices per step
-  double max_move = 0;        ///< unit-box units
-  /// Wall time per stage; `validation_s` is the fake holes' (stage 8's choice), `inpaint_s`
-  /// the rest of stage 8.
-  double coarse_s = 0, images_s = 0, validation_s = 0, inpaint_s = 0, deform_s = 0;
+  HoleChoice choice;
+  /// The kind of the variation its patch took (also where the deformation then failed and the
+  /// hole kept its coarse fill); empty where it never got that far.
+  std::string kind;
+  DeformationRecord deformation;
+  int crease_flips = 0; ///< fill edges flipped onto the fill's creases
+  StageSeconds seconds;
   /// Curvature spread (standard deviation over the fill, unit-box curvature) of what the
   /// chain carries, when measured: the ground truth and its image (oracle only, else 0), the
   /// target at the fill's vertices and the deformed fill's APSS curvature.
   GroundTruthSpread truth_spread;
   double target_spread = 0, result_spread = 0;
-  std::vector<std::string> candidates;   ///< validated ways to fill it; empty: not validated
-  std::vector<double> validation_errors; ///< per candidate: RMS over the fake holes / radius
-  /// per candidate: detail ratio on the fake holes where it breaks a tie, else -1
-  std::vector<double> validation_detail;
-  int choice = -1; ///< index into candidates
-  int fake_holes = 0;
-  int mirror_fake_holes = 0; ///< of those, cut at the hole's mirror place
-  /// Per fake hole (those at the mirror place last): each candidate's RMS / radius there.
-  std::vector<std::vector<double>> fake_hole_errors;
-  std::string validation_note;            ///< why there are fewer fake holes, or none
-  std::string symmetry_note, crease_note; ///< why it has no such variation; empty if it has
-  std::string pick_note; ///< why the kind asked for was not picked; empty if it was
-  /// Where the hole has a mirror image: the share of its fill that the image covers and the
-  /// mirrored ring's distance from the ring after their rigid registration (RMS, hole radii);
-  /// -1 where it has none.
-  double mirror_covered = -1, mirror_ring_residual = -1;
-  std::string problem; ///< why the hole kept its coarse fill; empty if none
-  bool asked = false;  ///< the pick was asked for (a number or a kind), not automatic
 };
 
-/// One hole's inpainting (stages 3-8) as a person previews it and FillHoles applies it.
+/// One hole's inpainting (stages 3-8b) as a person previews it and FillHoles applies it.
 struct HoleVariations {
   QImage image, mask; ///< the coarse curvature image and its hole (white)
-  /// The backend's completions of `image` ("continuation"), then the priors' variations.
+  /// The backend's completions of `image` ("continuation"), then the priors' variations; their
+  /// kinds, scores and the pick are in `choice`.
   std::vector<QImage> variations;
-  /// Per variation: "continuation", "exemplar", "symmetry", "symmetry surface", "creases",
-  /// "face" or "tri-laplacian".
-  std::vector<std::string> kinds;
   /// Per variation: empty where the patch is deformed to the image's curvature, else the
   /// patch (unit box) the hole takes as it is ("symmetry surface").
   std::vector<std::vector<Eigen::Vector3d>> surfaces;
-  std::vector<double> scores;     ///< ScoreVariation of each
-  int pick = 0;                   ///< 1-based; 0: the hole keeps its coarse fill
-  std::string problem;            ///< why there is nothing to choose from; empty if none
+  HoleChoice choice;              ///< pick 0 also where "coarse" validated best
   GroundTruthSpread truth_spread; ///< with the oracle: the ground truth's and its image's
   double detail_scale = 0;        ///< the fill's vertex spacing in the image, pixels
-  double detail = 0; ///< embedded: the amplitude the variations have (validated, or given)
-  /// Fake-hole validation, as in HoleFillReport; pick is 0 where "coarse" validated best.
-  std::vector<std::string> candidates;
-  std::vector<double> validation_errors, validation_detail;
-  int choice = -1;
-  int fake_holes = 0, mirror_fake_holes = 0;
-  std::vector<std::vector<double>> fake_hole_errors;
-  std::string validation_note;
-  std::string symmetry_note; ///< why the hole has no symmetry variation; empty if it has
-  std::string crease_note;   ///< why the hole has no crease variation; empty if it has
-  std::string pick_note;     ///< why the kind asked for was not picked; empty if it was
-  double mirror_covered = -1, mirror_ring_residual = -1; ///< as in HoleFillReport
-  double images_s = 0, validation_s = 0, inpaint_s = 0;  ///< as in HoleFillReport
-  int boundary_edges = 0;                                ///< of the hole
-  bool asked = false; ///< the pick was asked for (a number or a kind), not automatic
+  double detail = 0;      ///< embedded: the amplitude the variations have (validated, or given)
+  StageSeconds seconds;   ///< images, validation and inpaint
+  int boundary_edges = 0; ///< of the hole
 };
 
 struct HoleFillResult {
@@ -192,17 +163,6 @@ struct VariationRun {
   std::string kind;
 };
 std::vector<VariationRun> VariationRuns(const HoleVariations& hole);
-
-/// Whether FillHoles and InpaintHoles validate each hole on fake holes with these parameters
-/// (the embedded backend, fake holes asked for, no oracle and no hand-inpainted folder).
-bool ValidatesOnFakeHoles(const HoleFillParams& params);
-
-/// Whether the fake holes found the hole's coarse fill closest (then the automatic pick is 0).
-bool CoarseValidatedBest(const HoleVariations& hole);
-
-/// The automatic pick (1-based; 0: keep the coarse fill): the validated choice where it is a
-/// prior's variation or the coarse fill, else the best-scored continuation.
-int AutomaticPick(const HoleVariations& hole);
 
 /// Fills the holes of `m` with detail. With `chosen` (from InpaintHoles on a copy of `m` with
 /// the same parameters, picks possibly changed) the backend is not asked again: each hole is
@@ -230,37 +190,8 @@ std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& 
 void SaveVariationImages(const std::vector<HoleVariations>& holes, const std::string& dir,
                          int threads = 0);
 
-/// Per hole of a preview: its validation line (as in the fill's log), then its variations by
-/// number and kind with their scores and the pick fill makes with the same options, or why it
-/// has none.
-std::vector<std::string> DescribeVariations(const std::vector<HoleVariations>& holes);
-
 /// Asks the backend again for one hole (a "re-roll"): new variations (the embedded backend at
 /// the hole's own amplitude, `hole.detail`), scores and the automatic pick.
 void InpaintAgain(HoleVariations& hole, const InpaintParams& params);
-
-/// Scores a variation without ground truth (higher is better): how continuously the value
-/// field crosses the hole's border, how close the hole's colours stay to the palette, and how
-/// far its values leave the known ring's range.
-double ScoreVariation(const QImage& variation, const QImage& mask);
-
-/// One line on a hole's fake-hole validation: the candidates' errors and the choice, or why
-/// it was not validated.
-std::string DescribeValidation(const std::vector<std::string>& candidates,
-                               const std::vector<double>& errors, int choice, int fake_holes,
-                               int mirror_fake_holes, const std::string& note);
-
-std::vector<std::string> DescribeHoleFill(const HoleFillResult& result);
-
-/// One line per hole in words, "hole 3 (61 edges): the mirror image of the other side, better
-/// than the smooth fill on 4 of 4 test cuts"; the numbers are DescribeHoleFill's.
-std::vector<std::string> DescribeHolesInWords(const HoleFillResult& result);
-
-/// The facts of a hole's choice, for the words of hole_words.h.
-ChoiceFacts FactsOf(const HoleFillReport& hole);
-ChoiceFacts FactsOf(const HoleVariations& hole);
-
-/// The report as JSON (no keys, no URLs with credentials).
-std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParams& params);
 
 } // namespace curvature_inpaint

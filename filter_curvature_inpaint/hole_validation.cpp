@@ -1,4 +1,5 @@
-#include "hole_validation.h"
+// Stage 8b, the fake-hole validation (hole_choice.h).
+#include "hole_choice.h"
 
 #include "fake_holes.h"
 #include "patch_fills.h"
@@ -29,50 +30,28 @@ double RingCurvature(const HoleImage& h) {
   return Spread(known) * radius;
 }
 
-/// What a candidate of the fake-hole validation fills a hole with.
-enum class CandidateKind {
-  kCoarse,
-  kDetail,
-  kExemplar,
-  kTriLaplacian,
-  kSymmetry,
-  kSymmetrySurface,
-  kCreases
-};
-
+/// One candidate of the validation: a way to fill, at one of its amplitudes where it has them.
 struct ValidationCandidate {
-  CandidateKind kind;
+  const FillCandidate* fill = nullptr;
   std::string name;     ///< as the report, the log and the dialog list it
-  double amplitude = 0; ///< kDetail: the embedded inpainter's detail amplitude
-  size_t detail = 0;    ///< kDetail: which of ValidationParams::details
+  size_t amplitude = 0; ///< index into its ValidatedAmplitudes
+  double detail = -1;   ///< that amplitude; -1: it has none
 };
 
-/// A surface prior says nothing where a fake hole has no mirror image or no crease; there it
-/// stands for the best of the other candidates.
-bool IsSurfacePrior(CandidateKind k) {
-  return k == CandidateKind::kSymmetry || k == CandidateKind::kSymmetrySurface ||
-         k == CandidateKind::kCreases;
-}
-
-/// The candidates of a hole, in the order of the report: the coarse fill, the detail
-/// amplitudes, then the priors the hole itself has (`crease_kind` empty: none).
-std::vector<ValidationCandidate> ValidationCandidates(const HoleFillParams& params, bool continued,
-                                                      bool symmetric,
-                                                      const std::string& crease_kind) {
+/// The candidates of a hole, in the order of the report: each way to fill that these
+/// parameters turn on and the hole itself has (`hole`: its shared work), the continuation once
+/// per detail amplitude ("detail 0.5").
+std::vector<ValidationCandidate> ValidationCandidates(const HoleFillParams& params,
+                                                      const PatchWork& hole) {
   std::vector<ValidationCandidate> c;
-  const ValidationParams& vp = params.validation;
-  if (vp.coarse) c.push_back({CandidateKind::kCoarse, "coarse"});
-  for (size_t i = 0; i < vp.details.size(); ++i)
-    c.push_back({CandidateKind::kDetail,
-                 "detail " + QString::number(vp.details[i], 'g', 3).toStdString(), vp.details[i],
-                 i});
-  if (params.exemplar) c.push_back({CandidateKind::kExemplar, "exemplar"});
-  if (continued) c.push_back({CandidateKind::kTriLaplacian, "tri-laplacian"});
-  if (symmetric) {
-    c.push_back({CandidateKind::kSymmetry, "symmetry"});
-    c.push_back({CandidateKind::kSymmetrySurface, "symmetry surface"});
+  for (const FillCandidate* fill : FillCandidates()) {
+    if (!fill->Enabled(params) || !fill->Applies(hole)) continue;
+    const std::vector<double> amplitudes = fill->ValidatedAmplitudes(params);
+    if (amplitudes.empty()) c.push_back({fill, FillKindName(fill->KindAt(hole))});
+    for (size_t i = 0; i < amplitudes.size(); ++i)
+      c.push_back({fill, "detail " + QString::number(amplitudes[i], 'g', 3).toStdString(), i,
+                   amplitudes[i]});
   }
-  if (!crease_kind.empty()) c.push_back({CandidateKind::kCreases, crease_kind});
   return c;
 }
 
@@ -115,65 +94,35 @@ bool TryFakeHole(const FakeHole& fake, const std::vector<ValidationCandidate>& c
   const HoleImage& f = t.Hole();
   const auto fill = FillTriangles(f.patch);
   // The fake holes are deformed in direct mode whatever the hole's: paper mode's hundreds of
-  // steps, twenty times over, would take a minute a hole. The choice is an amplitude.
+  // steps, twenty times over, would take a minute a hole.
   HoleFillParams direct = params;
   direct.mode = "direct";
   InpaintParams one = inpaint;
   one.detail_scale = FillSpacingPixels(f);
   // Embedded only, and perhaps on another thread than the caller's: never MeshLab's callback.
   one.http.cancelled = nullptr;
-  const std::vector<QImage> completed =
-      InpaintEmbeddedAmplitudes(ToQImage(f.image, false), MaskImage(f.image), one, vp.details);
-  auto has = [&](CandidateKind k) {
-    return std::any_of(candidates.begin(), candidates.end(),
-                       [k](const ValidationCandidate& c) { return c.kind == k; });
-  };
+  PatchSite site;
+  site.patch = &f;
+  site.params = &direct;
+  site.inpaint = &one;
+  site.image = ToQImage(f.image, false);
+  site.mask = MaskImage(f.image);
   // The fake hole's mirror image, on the known surface without the fake hole's own (which the
-  // whole mesh still has), and its crease fill.
-  vcg_ext::MirroredFill mirror;
-  if (has(CandidateKind::kSymmetry))
-    mirror = MirroredPatch(*ctx.symmetry, f, t.images.coarse.box, params, fake.centre,
-                           1.25 * fake.radius / t.images.coarse.box.scale);
-  vcg_ext::CreaseFill crease;
-  if (has(CandidateKind::kCreases)) crease = CreasedPatch(f, params);
+  // whole mesh still has).
+  site.symmetry = ctx.symmetry;
+  site.frame = t.images.coarse.box;
+  site.excluded_centre = fake.centre;
+  site.excluded_radius = 1.25 * fake.radius / t.images.coarse.box.scale;
+  std::vector<const FillCandidate*> used;
+  for (const ValidationCandidate& c : candidates) used.push_back(c.fill);
+  PatchWork work = MakePatchWork(site, used);
+  work.completions = InpaintEmbeddedAmplitudes(site.image, site.mask, one, vp.details);
   for (const ValidationCandidate& c : candidates) {
-    t.fills.push_back(f.patch.points);
-    auto& points = t.fills.back();
-    bool applies = !IsSurfacePrior(c.kind);
-    auto deform_to = [&](const QImage& image) {
-      PatchDeformation d = DeformPatch(f, image, direct);
-      if (d.result.solved) points = std::move(d.points);
-      return d.result.solved;
-    };
-    switch (c.kind) {
-    case CandidateKind::kCoarse:
-      break;
-    case CandidateKind::kDetail:
-      deform_to(completed.at(c.detail));
-      break;
-    case CandidateKind::kExemplar: {
-      const std::vector<QImage> copied =
-          InpaintExemplarVariations(ToQImage(f.image, false), MaskImage(f.image), one, 1);
-      if (!copied.empty()) deform_to(copied[0]);
-      break;
-    }
-    case CandidateKind::kTriLaplacian: {
-      PatchFill faired = TriLaplacianPatch(f);
-      if (faired.problem.empty()) points = std::move(faired.points);
-      break;
-    }
-    case CandidateKind::kSymmetry:
-      if (mirror.problem.empty()) applies = deform_to(SurfaceImage(f, mirror.points, params));
-      break;
-    case CandidateKind::kSymmetrySurface:
-      if (mirror.problem.empty()) points = mirror.points, applies = true;
-      break;
-    case CandidateKind::kCreases:
-      if (crease.problem.empty()) points = crease.points, applies = true;
-      break;
-    }
-    t.applies.push_back(applies);
-    t.errors.push_back(applies ? FakeHoleError(fake, points, fill) / fake.radius : 0.0);
+    FakeHoleFill filled = c.fill->FillFakeHole(site, work, c.amplitude);
+    t.applies.push_back(filled.applies);
+    t.fills.push_back(filled.applies ? std::move(filled.points) : f.patch.points);
+    t.errors.push_back(filled.applies ? FakeHoleError(fake, t.fills.back(), fill) / fake.radius
+                                      : 0.0);
   }
   return true;
 }
@@ -189,12 +138,12 @@ void StandInForSurfacePriors(const std::vector<ValidationCandidate>& candidates,
     for (size_t c = 0; c < n; ++c) sum[c] += t.errors[c];
   size_t fallback = n;
   for (size_t c = 0; c < n; ++c)
-    if (!IsSurfacePrior(candidates[c].kind) && (fallback == n || sum[c] < sum[fallback]))
+    if (!candidates[c].fill->IsSurfacePrior() && (fallback == n || sum[c] < sum[fallback]))
       fallback = c;
   if (fallback == n) return;
   for (FakeHoleTrial& t : trials)
     for (size_t c = 0; c < n; ++c)
-      if (IsSurfacePrior(candidates[c].kind) && !t.applies[c])
+      if (candidates[c].fill->IsSurfacePrior() && !t.applies[c])
         t.errors[c] = t.errors[fallback], t.fills[c] = t.fills[fallback];
 }
 
@@ -265,13 +214,18 @@ bool FlatterThanFakeHoles(const HoleImage& hi, const std::vector<FakeHoleTrial>&
 
 } // namespace
 
-void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const InpaintParams& inpaint,
-                  const ValidationContext& ctx, bool continued, bool symmetric,
-                  const std::string& crease_kind, HoleVariations& hv) {
+bool ValidatesOnFakeHoles(const HoleFillParams& p) {
+  return p.validation.fake_holes > 0 && p.inpaint.backend == "embedded" && !p.oracle &&
+         p.inpainted_dir.empty();
+}
+
+ValidationRecord ValidateHole(const HoleImage& hi, const HoleFillParams& params,
+                              const InpaintParams& inpaint, const ValidationContext& ctx,
+                              const PatchWork& hole) {
   const ValidationParams& vp = params.validation;
-  const std::vector<ValidationCandidate> candidates =
-      ValidationCandidates(params, continued, symmetric, crease_kind);
-  for (const ValidationCandidate& c : candidates) hv.candidates.push_back(c.name);
+  const std::vector<ValidationCandidate> candidates = ValidationCandidates(params, hole);
+  ValidationRecord record;
+  for (const ValidationCandidate& c : candidates) record.candidates.push_back(c.name);
   FakeHoleParams fp;
   fp.count = vp.fake_holes;
   fp.seed = params.inpaint.seed;
@@ -291,16 +245,16 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
   for (size_t i = 0; i < tried.size(); ++i)
     if (filled[i]) trials.push_back(std::move(tried[i]));
   StandInForSurfacePriors(candidates, trials);
-  hv.fake_holes = int(trials.size());
+  record.fake_holes = int(trials.size());
   for (const FakeHoleTrial& t : trials) {
-    hv.mirror_fake_holes += t.fake->at_mirror_place;
-    hv.fake_hole_errors.push_back(t.errors);
+    record.mirror_fake_holes += t.fake->at_mirror_place;
+    record.per_fake_hole.push_back(t.errors);
   }
   if (trials.empty()) {
-    hv.candidates.clear();
-    hv.validation_note = (why.empty() ? std::string("no fake hole near it could be filled") : why) +
-                         "; the variation score chooses";
-    return;
+    record.candidates.clear();
+    record.note = (why.empty() ? std::string("no fake hole near it could be filled") : why) +
+                  "; the variation score chooses";
+    return record;
   }
   std::vector<double> error(candidates.size(), 0.0);
   for (const FakeHoleTrial& t : trials)
@@ -313,11 +267,12 @@ void ValidateHole(const HoleImage& hi, const HoleFillParams& params, const Inpai
     choice = 0; // the coarse fill
     why = why.empty() ? flatter : why + "; " + flatter;
   }
-  hv.validation_errors = error;
-  hv.validation_detail = detail;
-  hv.choice = int(choice);
-  if (candidates[choice].kind == CandidateKind::kDetail) hv.detail = candidates[choice].amplitude;
-  if (!why.empty()) hv.validation_note = why;
+  record.errors = error;
+  record.detail = detail;
+  record.chosen = int(choice);
+  record.chosen_amplitude = candidates[choice].detail;
+  if (!why.empty()) record.note = why;
+  return record;
 }
 
 } // namespace curvature_inpaint

@@ -40,12 +40,11 @@ std::string KindInWords(const std::string& kind) {
   return kind;
 }
 
-std::string TestCutsInWords(const std::vector<std::string>& candidates,
-                            const std::vector<std::vector<double>>& fake_hole_errors, size_t c) {
-  const int smooth = SmoothIndex(candidates);
-  if (smooth < 0 || c >= candidates.size() || fake_hole_errors.empty()) return "";
+std::string TestCutsInWords(const ValidationRecord& v, size_t c) {
+  const int smooth = SmoothIndex(v.candidates);
+  if (smooth < 0 || c >= v.candidates.size() || v.per_fake_hole.empty()) return "";
   int wins = 0, cuts = 0;
-  for (const std::vector<double>& errors : fake_hole_errors) {
+  for (const std::vector<double>& errors : v.per_fake_hole) {
     if (c >= errors.size() || !std::isfinite(errors[c])) continue;
     ++cuts;
     if (int(c) == smooth) {
@@ -62,22 +61,22 @@ std::string TestCutsInWords(const std::vector<std::string>& candidates,
   return (int(c) == smooth ? "best on " : "better than the smooth fill on ") + of;
 }
 
-std::string ChoiceInWords(const ChoiceFacts& f) {
-  const bool validated = f.choice >= 0 && size_t(f.choice) < f.candidates.size();
+std::string ChoiceInWords(const HoleChoice& f) {
+  const ValidationRecord& v = f.validation;
+  const bool validated = v.chosen >= 0 && size_t(v.chosen) < v.candidates.size();
   if (!f.problem.empty() || f.pick <= 0) {
     const std::string note = f.pick_note.empty() ? "" : " (" + f.pick_note + ")";
-    if (validated && f.candidates[size_t(f.choice)] == "coarse" && f.pick <= 0)
-      return "kept the smooth fill, " +
-             TestCutsInWords(f.candidates, f.fake_hole_errors, size_t(f.choice)) + note;
+    if (validated && v.candidates[size_t(v.chosen)] == "coarse" && f.pick <= 0)
+      return "kept the smooth fill, " + TestCutsInWords(v, size_t(v.chosen)) + note;
     return "kept the smooth fill" + (f.problem.empty() ? note : ": " + Reason(f.problem));
   }
-  std::string what = KindInWords(f.kind);
+  std::string what = KindInWords(f.PickedKind());
   if (f.asked) return what + " (variation " + std::to_string(f.pick) + "), as asked";
   std::string why;
   if (validated) {
     // The continuations are validated as detail amplitudes; the picked one is the chosen one.
-    why = TestCutsInWords(f.candidates, f.fake_hole_errors, size_t(f.choice));
-    if (f.kind == "continuation") what = KindInWords(f.candidates[size_t(f.choice)]);
+    why = TestCutsInWords(v, size_t(v.chosen));
+    if (f.PickedKind() == "continuation") what = KindInWords(v.candidates[size_t(v.chosen)]);
   } else {
     why = "the best-scored of its variations";
   }

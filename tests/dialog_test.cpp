@@ -171,25 +171,27 @@ private slots:
     QCOMPARE(mesh_.vn, vertices); // the preview works on a copy
     QCOMPARE(int(d.Holes().size()), 3);
     for (const auto& hole : d.Holes()) {
-      QVERIFY(hole.problem.empty());
+      QVERIFY(hole.choice.problem.empty());
       // Three continuations, then the priors' variations where the hole has them.
       QVERIFY(hole.variations.size() >= 3);
-      QCOMPARE(hole.kinds.size(), hole.variations.size());
-      for (size_t j = 0; j < 3; ++j) QCOMPARE(hole.kinds[j], std::string("continuation"));
+      QCOMPARE(hole.choice.kinds.size(), hole.variations.size());
+      for (size_t j = 0; j < 3; ++j) QCOMPARE(hole.choice.kinds[j], std::string("continuation"));
       // The automatic pick: Skip where the fake holes found the coarse fill closest, a prior's
       // variation where it validated best, else the best-scored continuation; the dialog
       // shows the validation.
-      QVERIFY(!hole.candidates.empty());
-      const std::string& choice = hole.candidates[size_t(hole.choice)];
-      const int best = int(std::max_element(hole.scores.begin(), hole.scores.begin() + 3) -
-                           hole.scores.begin()) +
-                       1;
+      QVERIFY(!hole.choice.validation.candidates.empty());
+      const std::string& choice =
+          hole.choice.validation.candidates[size_t(hole.choice.validation.chosen)];
+      const int best =
+          int(std::max_element(hole.choice.scores.begin(), hole.choice.scores.begin() + 3) -
+              hole.choice.scores.begin()) +
+          1;
       if (choice == "coarse")
-        QCOMPARE(hole.pick, 0);
+        QCOMPARE(hole.choice.pick, 0);
       else if (choice.rfind("detail", 0) == 0)
-        QCOMPARE(hole.pick, best);
+        QCOMPARE(hole.choice.pick, best);
       else
-        QCOMPARE(hole.kinds[size_t(hole.pick - 1)], choice);
+        QCOMPARE(hole.choice.kinds[size_t(hole.choice.pick - 1)], choice);
     }
     // The choice in words; the numbers only in the tooltip, and no score in any caption.
     const QString choice = Find<QLabel>(d, "validation_1")->text();
@@ -213,17 +215,17 @@ private slots:
     const int last_variation = last->data(Qt::UserRole + 1).toInt() + 1;
     QCOMPARE(last_variation, int(d.Holes()[0].variations.size()));
     QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, list->visualItemRect(last).center());
-    QCOMPARE(d.Holes()[0].pick, last_variation);
+    QCOMPARE(d.Holes()[0].choice.pick, last_variation);
     Find<QCheckBox>(d, "skip_2")->click();
-    QCOMPARE(d.Holes()[1].pick, 0);
+    QCOMPARE(d.Holes()[1].choice.pick, 0);
     // Hole 3: skipped, then a variation clicked: the click undoes the skip.
     auto* skip_3 = Find<QCheckBox>(d, "skip_3");
     if (!skip_3->isChecked()) skip_3->click();
-    QCOMPARE(d.Holes()[2].pick, 0);
+    QCOMPARE(d.Holes()[2].choice.pick, 0);
     auto* list_3 = Find<QListWidget>(d, "variations_3");
     QTest::mouseClick(list_3->viewport(), Qt::LeftButton, {},
                       list_3->visualItemRect(list_3->item(1)).center());
-    QCOMPARE(d.Holes()[2].pick, list_3->item(1)->data(Qt::UserRole + 1).toInt() + 1);
+    QCOMPARE(d.Holes()[2].choice.pick, list_3->item(1)->data(Qt::UserRole + 1).toInt() + 1);
     QVERIFY(!skip_3->isChecked());
 
     // Apply's input deforms a copy of the mesh as chosen: hole 2 keeps its coarse fill.
@@ -231,9 +233,9 @@ private slots:
     curvature_inpaint::CopyMesh(mesh_, applied);
     const auto result = curvature_inpaint::FillHoles(applied, d.Params(), nullptr, &d.Holes());
     QCOMPARE(int(result.holes.size()), 3);
-    QCOMPARE(result.holes[0].pick, last_variation);
-    QVERIFY(result.holes[1].problem.find("skipped") != std::string::npos);
-    QVERIFY(result.holes[2].problem.empty());
+    QCOMPARE(result.holes[0].choice.pick, last_variation);
+    QVERIFY(result.holes[1].choice.problem.find("skipped") != std::string::npos);
+    QVERIFY(result.holes[2].choice.problem.empty());
 
     QTest::mouseClick(Find<QPushButton>(d, "apply"), Qt::LeftButton);
     QCOMPARE(d.result(), int(QDialog::Accepted));
@@ -257,13 +259,13 @@ private slots:
     QTRY_VERIFY_WITH_TIMEOUT(!d.Busy(), 120000);
     QCOMPARE(int(d.Holes().size()), 1);
     const auto& hole = d.Holes()[0];
-    QVERIFY2(hole.problem.empty(), hole.problem.c_str());
-    QVERIFY2(hole.symmetry_note.empty(), hole.symmetry_note.c_str());
+    QVERIFY2(hole.choice.problem.empty(), hole.choice.problem.c_str());
+    QVERIFY2(hole.choice.priors.no_symmetry.empty(), hole.choice.priors.no_symmetry.c_str());
     // The egg is smooth all round: the crease prior offers its one face extended too.
-    QCOMPARE(hole.kinds,
+    QCOMPARE(hole.choice.kinds,
              (std::vector<std::string>{"continuation", "continuation", "exemplar", "exemplar",
                                        "tri-laplacian", "symmetry", "symmetry surface", "face"}));
-    QCOMPARE(hole.kinds[size_t(hole.pick - 1)], std::string("continuation"));
+    QCOMPARE(hole.choice.kinds[size_t(hole.choice.pick - 1)], std::string("continuation"));
     // Each item says its kind; the two continuations, identical at detail 0, are one item;
     // clicking the mirrored surface chooses it.
     auto* list = Find<QListWidget>(d, "variations_1");
@@ -282,7 +284,7 @@ private slots:
     QVERIFY(list->item(6)->text().contains("face"));
     QTest::mouseClick(list->viewport(), Qt::LeftButton, {},
                       list->visualItemRect(list->item(5)).center());
-    QCOMPARE(d.Holes()[0].pick, 7);
+    QCOMPARE(d.Holes()[0].choice.pick, 7);
     // Apply's input: the hole takes the mirrored surface, bump and all.
     CMeshO applied;
     curvature_inpaint::CopyMesh(egg, applied);
@@ -297,7 +299,7 @@ private slots:
     Find<QCheckBox>(d, "creases")->setChecked(false);
     d.Inpaint();
     QTRY_VERIFY_WITH_TIMEOUT(!d.Busy(), 120000);
-    QCOMPARE(d.Holes()[0].kinds, (std::vector<std::string>{"continuation", "continuation"}));
+    QCOMPARE(d.Holes()[0].choice.kinds, (std::vector<std::string>{"continuation", "continuation"}));
   }
 
   void reroll_replaces_one_hole() {

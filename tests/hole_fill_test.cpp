@@ -1,7 +1,9 @@
 // The whole method on MeshLab's mesh type: the ground-truth oracle through the chain, the
 // detail amplitude, the fake holes and their validation.
 #include "fake_holes.h"
+#include "fill_one_hole.h"
 #include "hole_fill.h"
+#include "hole_report.h"
 #include "mesh_io.h"
 #include "inpaint/curvature_reading.h"
 #include "pipeline.h"
@@ -39,9 +41,7 @@ using curvature_inpaint::HoleFillParams;
 
 /// A hole's validation as the log gives it: what a failed expectation on its choice shows.
 std::string Validation(const curvature_inpaint::HoleFillReport& r) {
-  return curvature_inpaint::DescribeValidation(r.candidates, r.validation_errors, r.choice,
-                                               r.fake_holes, r.mirror_fake_holes,
-                                               r.validation_note);
+  return curvature_inpaint::DescribeValidation(r.choice.validation);
 }
 
 // Bumps whose tip curvature (1 + 2 h / w^2) the colour map's range can hold.
@@ -125,7 +125,7 @@ TEST(GroundTruthOracle, TheFillBringsBackEveryBumpOfTheTruth) {
   const auto result = FillFromTheTruth(truth, SmallImages(), m);
   ASSERT_EQ(result.holes.size(), 1u);
   const auto& r = result.holes[0];
-  ASSERT_TRUE(r.problem.empty()) << r.problem;
+  ASSERT_TRUE(r.choice.problem.empty()) << r.choice.problem;
   for (double h : BumpHeights(m, scan_vertices)) EXPECT_NEAR(h, kBumpHeight, 0.2 * kBumpHeight);
   ASSERT_GT(r.truth_spread.truth, 0);
   EXPECT_GE(r.result_spread / r.truth_spread.truth, 0.8)
@@ -145,7 +145,7 @@ TEST(GroundTruthOracle, ApssPassesBringTheFillsCurvatureCloserToTheImage) {
     const auto result = FillFromTheTruth(truth, p, m);
     ASSERT_EQ(result.holes.size(), 1u);
     const auto& r = result.holes[0];
-    ASSERT_TRUE(r.problem.empty()) << r.problem;
+    ASSERT_TRUE(r.choice.problem.empty()) << r.choice.problem;
     for (double h : BumpHeights(m, m.vert.size() - size_t(r.new_vertices)))
       EXPECT_NEAR(h, kBumpHeight, 0.1 * kBumpHeight) << passes << " passes";
     spreads.push_back(r.result_spread);
@@ -174,8 +174,8 @@ TEST(Detail, TheAmplitudeChangesTheFillAndZeroIsTheSmoothContinuation) {
     const auto holes = curvature_inpaint::InpaintHoles(preview, p);
     ASSERT_EQ(holes.size(), 1u);
     ASSERT_GE(holes[0].variations.size(), 2u);
-    ASSERT_EQ(holes[0].kinds[0], "continuation");
-    ASSERT_EQ(holes[0].kinds[1], "continuation");
+    ASSERT_EQ(holes[0].choice.kinds[0], "continuation");
+    ASSERT_EQ(holes[0].choice.kinds[1], "continuation");
     if (detail == 0)
       EXPECT_EQ(holes[0].variations[0], holes[0].variations[1]) << "no detail, nothing random";
     else
@@ -187,10 +187,10 @@ TEST(Detail, TheAmplitudeChangesTheFillAndZeroIsTheSmoothContinuation) {
     reroll.seed += 1000;
     reroll.detail = 2 - detail;
     curvature_inpaint::InpaintAgain(again, reroll);
-    ASSERT_EQ(again.kinds, holes[0].kinds);
+    ASSERT_EQ(again.choice.kinds, holes[0].choice.kinds);
     EXPECT_EQ(again.variations[0] == again.variations[1], detail == 0);
     const auto result = FillHoles(m, p);
-    ASSERT_TRUE(result.holes[0].problem.empty()) << result.holes[0].problem;
+    ASSERT_TRUE(result.holes[0].choice.problem.empty()) << result.holes[0].choice.problem;
     fills.emplace_back();
     for (size_t v = scan_vertices; v < m.vert.size(); ++v) fills.back().push_back(m.vert[v].cP());
     spreads.push_back(result.holes[0].result_spread);
@@ -476,14 +476,16 @@ TEST(FakeHoles, ASmallClosedPartFallsBackToTheVariationScoreAndSaysSo) {
   const auto result = FillHoles(m, p);
   ASSERT_EQ(result.holes.size(), 1u);
   const auto& r = result.holes[0];
-  EXPECT_TRUE(r.candidates.empty());
-  EXPECT_NE(r.validation_note.find("no room"), std::string::npos) << r.validation_note;
-  EXPECT_NE(r.validation_note.find("variation score"), std::string::npos) << r.validation_note;
+  EXPECT_TRUE(r.choice.validation.candidates.empty());
+  EXPECT_NE(r.choice.validation.note.find("no room"), std::string::npos)
+      << r.choice.validation.note;
+  EXPECT_NE(r.choice.validation.note.find("variation score"), std::string::npos)
+      << r.choice.validation.note;
   // The report says so too, for those who read it instead of the log.
   const std::string json = curvature_inpaint::HoleFillReportJson(result, p);
   EXPECT_NE(json.find("\"validation\": {\"note\": \"no room"), std::string::npos) << json;
-  EXPECT_TRUE(r.problem.empty()) << r.problem;
-  EXPECT_GE(r.pick, 1);
+  EXPECT_TRUE(r.choice.problem.empty()) << r.choice.problem;
+  EXPECT_GE(r.choice.pick, 1);
   const auto census = curvature_inpaint::CountHoles(m);
   EXPECT_TRUE(census.loop_edges.empty());
 }
@@ -502,16 +504,16 @@ QJsonObject FirstHoleOfReport(const curvature_inpaint::HoleFillResult& result) {
 TEST(Report, NumbersThatAreNotFiniteAreWrittenAsNull) {
   curvature_inpaint::HoleFillResult result;
   curvature_inpaint::HoleFillReport r;
-  r.scores = {std::numeric_limits<double>::quiet_NaN(), 0.25};
-  r.kinds = {"continuation", "continuation"};
-  r.pick = 2;
-  r.candidates = {"coarse", "tri-laplacian"};
-  r.validation_errors = {0.5, std::numeric_limits<double>::infinity()};
-  r.validation_detail = {-1, -1};
-  r.fake_hole_errors = {{0.5, -std::numeric_limits<double>::infinity()}};
-  r.fake_holes = 1;
-  r.choice = 0;
-  r.max_move = std::numeric_limits<double>::quiet_NaN();
+  r.choice.scores = {std::numeric_limits<double>::quiet_NaN(), 0.25};
+  r.choice.kinds = {"continuation", "continuation"};
+  r.choice.pick = 2;
+  r.choice.validation.candidates = {"coarse", "tri-laplacian"};
+  r.choice.validation.errors = {0.5, std::numeric_limits<double>::infinity()};
+  r.choice.validation.detail = {-1, -1};
+  r.choice.validation.per_fake_hole = {{0.5, -std::numeric_limits<double>::infinity()}};
+  r.choice.validation.fake_holes = 1;
+  r.choice.validation.chosen = 0;
+  r.deformation.max_move = std::numeric_limits<double>::quiet_NaN();
   result.holes.push_back(r);
   const QJsonObject hole = FirstHoleOfReport(result);
   EXPECT_TRUE(hole["scores"].toArray()[0].isNull());
@@ -528,11 +530,11 @@ TEST(Report, NotesReadBackExactlyWhateverCharactersTheyHold) {
   const std::string note = "server said \"bad\" at C:\\scans\\a.ply\nthen\t\x01stopped";
   curvature_inpaint::HoleFillResult result;
   curvature_inpaint::HoleFillReport r;
-  r.kinds = {"symmetry \"mirrored\""};
-  r.kind = r.kinds[0];
-  r.validation_note = note;
-  r.crease_note = note;
-  r.problem = note;
+  r.choice.kinds = {"symmetry \"mirrored\""};
+  r.kind = r.choice.kinds[0];
+  r.choice.validation.note = note;
+  r.choice.priors.no_creases = note;
+  r.choice.problem = note;
   result.holes.push_back(r);
   const QJsonObject hole = FirstHoleOfReport(result);
   EXPECT_EQ(hole["validation"].toObject()["note"].toString().toStdString(), note);
@@ -566,12 +568,15 @@ TEST(FakeHoles, TheValidatedChoiceIsTheSameForAnyThreadCount) {
     ASSERT_EQ(previews.back().size(), result.holes.size());
     for (size_t k = 0; k < result.holes.size(); ++k) {
       const auto& h = result.holes[k];
-      ASSERT_FALSE(h.candidates.empty()) << h.validation_note;
-      choices.back().push_back(h.candidates[size_t(h.choice)]);
+      ASSERT_FALSE(h.choice.validation.candidates.empty()) << h.choice.validation.note;
+      choices.back().push_back(h.choice.validation.candidates[size_t(h.choice.validation.chosen)]);
       // The preview validates as the fill does.
-      EXPECT_EQ(previews.back()[k].candidates, h.candidates) << threads << " " << k;
-      EXPECT_EQ(previews.back()[k].validation_errors, h.validation_errors) << threads << " " << k;
-      EXPECT_EQ(previews.back()[k].choice, h.choice) << threads << " " << k;
+      EXPECT_EQ(previews.back()[k].choice.validation.candidates, h.choice.validation.candidates)
+          << threads << " " << k;
+      EXPECT_EQ(previews.back()[k].choice.validation.errors, h.choice.validation.errors)
+          << threads << " " << k;
+      EXPECT_EQ(previews.back()[k].choice.validation.chosen, h.choice.validation.chosen)
+          << threads << " " << k;
     }
     results.emplace_back();
     for (const auto& v : m.vert) results.back().push_back(v.cP());
@@ -580,7 +585,7 @@ TEST(FakeHoles, TheValidatedChoiceIsTheSameForAnyThreadCount) {
     EXPECT_EQ(choices[0], choices[run]) << run;
     for (size_t k = 0; k < previews[0].size(); ++k) {
       EXPECT_EQ(previews[0][k].variations, previews[run][k].variations) << run << " " << k;
-      EXPECT_EQ(previews[0][k].pick, previews[run][k].pick) << run << " " << k;
+      EXPECT_EQ(previews[0][k].choice.pick, previews[run][k].choice.pick) << run << " " << k;
     }
     ASSERT_EQ(results[0].size(), results[run].size());
     for (size_t i = 0; i < results[0].size(); ++i)
@@ -701,14 +706,14 @@ TEST(FakeHoles, AHoleFarFlatterAroundThanItsFakeHolesKeepsTheSmoothFill) {
     const auto result = FillHoles(m, p);
     ASSERT_EQ(result.holes.size(), 1u);
     const auto& r = result.holes[0];
-    ASSERT_GT(r.fake_holes, 0) << r.validation_note;
-    const bool kept = r.validation_note.find("times flatter") != std::string::npos;
+    ASSERT_GT(r.choice.validation.fake_holes, 0) << r.choice.validation.note;
+    const bool kept = r.choice.validation.note.find("times flatter") != std::string::npos;
     if (max_flatter > 0) {
-      EXPECT_TRUE(kept) << r.validation_note;
-      EXPECT_EQ(r.candidates[size_t(r.choice)], "coarse");
-      EXPECT_EQ(r.pick, 0) << "the coarse fill, not a variation";
+      EXPECT_TRUE(kept) << r.choice.validation.note;
+      EXPECT_EQ(r.choice.validation.candidates[size_t(r.choice.validation.chosen)], "coarse");
+      EXPECT_EQ(r.choice.pick, 0) << "the coarse fill, not a variation";
     } else {
-      EXPECT_FALSE(kept) << r.validation_note;
+      EXPECT_FALSE(kept) << r.choice.validation.note;
     }
   }
 }
@@ -727,15 +732,15 @@ void ExpectTheBumpBackFromItsTwin(const curvature_inpaint::HoleFillResult& resul
                                   size_t scan_vertices, const Eigen::Vector3d& bump) {
   ASSERT_EQ(result.holes.size(), 1u);
   const auto& r = result.holes[0];
-  ASSERT_TRUE(r.problem.empty()) << r.problem;
-  ASSERT_FALSE(r.candidates.empty()) << r.validation_note;
+  ASSERT_TRUE(r.choice.problem.empty()) << r.choice.problem;
+  ASSERT_FALSE(r.choice.validation.candidates.empty()) << r.choice.validation.note;
   EXPECT_EQ(r.kind.rfind("symmetry", 0), 0u) << "chose " << r.kind << ": " << Validation(r);
   // The twin's height is the bump's: the mirror image brings it back.
   EXPECT_NEAR(test::FillHeight(m, scan_vertices, bump), test::kEggBump, 0.1 * test::kEggBump);
   // The egg's halves are exact twins: the image covers the fill, its ring lies on the ring.
-  EXPECT_GE(r.mirror_covered, 0.8);
-  EXPECT_GE(r.mirror_ring_residual, 0);
-  EXPECT_LT(r.mirror_ring_residual, 0.02);
+  EXPECT_GE(r.choice.priors.mirror_covered, 0.8);
+  EXPECT_GE(r.choice.priors.mirror_ring_residual, 0);
+  EXPECT_LT(r.choice.priors.mirror_ring_residual, 0.02);
   std::string log;
   for (const std::string& line : curvature_inpaint::DescribeHoleFill(result)) log += line + "\n";
   EXPECT_NE(log.find("mirror image on "), std::string::npos) << log;
@@ -790,12 +795,16 @@ TEST(Symmetry, AHoleWhoseTwinIsMissingTooKeepsTheContinuation) {
   const auto result = FillHoles(m, p);
   ASSERT_EQ(result.holes.size(), 2u);
   for (const auto& r : result.holes) {
-    ASSERT_TRUE(r.problem.empty() || r.problem.find("coarse fill validated") != std::string::npos)
-        << r.problem;
-    EXPECT_EQ(std::count(r.candidates.begin(), r.candidates.end(), "symmetry"), 0);
-    EXPECT_EQ(r.mirror_fake_holes, 0) << "the mirror place is the other hole";
-    EXPECT_LT(r.mirror_covered, 0) << "its mirror image is in the other hole";
-    if (r.problem.empty()) EXPECT_TRUE(r.kind == "continuation" || r.kind == "tri-laplacian");
+    ASSERT_TRUE(r.choice.problem.empty() ||
+                r.choice.problem.find("coarse fill validated") != std::string::npos)
+        << r.choice.problem;
+    EXPECT_EQ(std::count(r.choice.validation.candidates.begin(),
+                         r.choice.validation.candidates.end(), "symmetry"),
+              0);
+    EXPECT_EQ(r.choice.validation.mirror_fake_holes, 0) << "the mirror place is the other hole";
+    EXPECT_LT(r.choice.priors.mirror_covered, 0) << "its mirror image is in the other hole";
+    if (r.choice.problem.empty())
+      EXPECT_TRUE(r.kind == "continuation" || r.kind == "tri-laplacian");
   }
 }
 
@@ -901,9 +910,9 @@ bool FillsOneHoleWithCreases(CMeshO& m, const std::string& pick_kind = "") {
     return false;
   }
   const auto& r = result.holes[0];
-  if (!r.problem.empty() || r.kind != "creases") {
-    ADD_FAILURE() << "filled as " << r.kind << ": " << r.problem << "; " << r.crease_note << "; "
-                  << Validation(r);
+  if (!r.choice.problem.empty() || r.kind != "creases") {
+    ADD_FAILURE() << "filled as " << r.kind << ": " << r.choice.problem << "; "
+                  << r.choice.priors.no_creases << "; " << Validation(r);
     return false;
   }
   return true;
@@ -974,7 +983,8 @@ std::vector<double> FandiskCreaseFillErrors(int seed_vertex, double radius_frac 
   const auto result = FillHoles(m, p);
   EXPECT_EQ(result.holes.size(), 1u);
   if (result.holes.size() != 1 || result.holes[0].kind != "creases") {
-    ADD_FAILURE() << "no crease fill: " << (result.holes.empty() ? "" : result.holes[0].problem);
+    ADD_FAILURE() << "no crease fill: "
+                  << (result.holes.empty() ? "" : result.holes[0].choice.problem);
     return {};
   }
   return surface ? FillSurfaceErrors(truth, m, scan_vertices, diagonal)
@@ -1046,7 +1056,7 @@ TEST(Creases, AHoleOnACubesEdgeAndOneOnItsCornerComeBackSharp) {
   const auto result = FillHoles(m, p);
   ASSERT_EQ(result.holes.size(), 2u);
   for (const auto& r : result.holes) {
-    ASSERT_TRUE(r.problem.empty()) << r.problem;
+    ASSERT_TRUE(r.choice.problem.empty()) << r.choice.problem;
     EXPECT_EQ(r.kind, "creases") << Validation(r);
   }
   // Every fill vertex on the cube (the edge straight, the corner where the three faces meet)
@@ -1283,13 +1293,13 @@ TEST(Creases, AHoleInOneFaceWithNoCreaseNearGetsTheFaceExtended) {
     const auto result = FillHoles(m, p);
     ASSERT_EQ(result.holes.size(), 1u);
     const auto& r = result.holes[0];
-    ASSERT_TRUE(r.problem.empty()) << r.problem;
+    ASSERT_TRUE(r.choice.problem.empty()) << r.choice.problem;
     if (!face) {
-      EXPECT_EQ(r.crease_note, "no crease runs into it");
+      EXPECT_EQ(r.choice.priors.no_creases, "no crease runs into it");
       EXPECT_NE(r.kind, "face");
       continue;
     }
-    EXPECT_EQ(r.kind, "face") << r.crease_note;
+    EXPECT_EQ(r.kind, "face") << r.choice.priors.no_creases;
     ASSERT_GT(m.vert.size(), scan_vertices);
     for (size_t v = scan_vertices; v < m.vert.size(); ++v)
       EXPECT_NEAR(std::hypot(m.vert[v].cP()[0], m.vert[v].cP()[1]), 1, 0.005) << v;
@@ -1306,7 +1316,8 @@ TEST(FlatCaps, AHoleInAFaceBesideAnEdgeStaysInTheFace) {
   const size_t scan_vertices = m.vert.size();
   const auto result = FillWithoutSymmetry(m);
   ASSERT_EQ(result.holes.size(), 1u);
-  EXPECT_NE(result.holes[0].problem.find("flat cap"), std::string::npos) << result.holes[0].problem;
+  EXPECT_NE(result.holes[0].choice.problem.find("flat cap"), std::string::npos)
+      << result.holes[0].choice.problem;
   ASSERT_GT(m.vert.size(), scan_vertices);
   for (size_t v = scan_vertices; v < m.vert.size(); ++v)
     EXPECT_NEAR(m.vert[v].cP()[2], 1, 1e-6) << v;
@@ -1364,14 +1375,18 @@ TEST(TriLaplacian, AHoleOnAnEllipsoidComesBackCloserThanTheThinPlate) {
   ASSERT_EQ(validated.holes.size(), 1u);
   const auto& r = validated.holes[0];
   EXPECT_EQ(r.kind, "tri-laplacian") << Validation(r);
-  EXPECT_EQ(std::count(r.candidates.begin(), r.candidates.end(), "tri-laplacian"), 1);
+  EXPECT_EQ(std::count(r.choice.validation.candidates.begin(), r.choice.validation.candidates.end(),
+                       "tri-laplacian"),
+            1);
   // Off: neither a candidate nor a variation.
   p.tri_laplacian = false;
   const auto off = FillHoles(holed, p);
-  EXPECT_EQ(
-      std::count(off.holes[0].candidates.begin(), off.holes[0].candidates.end(), "tri-laplacian"),
-      0);
-  EXPECT_EQ(std::count(off.holes[0].kinds.begin(), off.holes[0].kinds.end(), "tri-laplacian"), 0);
+  EXPECT_EQ(std::count(off.holes[0].choice.validation.candidates.begin(),
+                       off.holes[0].choice.validation.candidates.end(), "tri-laplacian"),
+            0);
+  EXPECT_EQ(std::count(off.holes[0].choice.kinds.begin(), off.holes[0].choice.kinds.end(),
+                       "tri-laplacian"),
+            0);
 }
 
 // rocker_arm_603 of the benchmark's tuning half: a near-flat stretch of the rocker arm among
@@ -1396,10 +1411,12 @@ TEST(FakeHoles, TheRockerArmsFlatStretchKeepsTheSmoothFillItsFakeHolesWouldBend)
     ASSERT_EQ(result.holes.size(), 1u);
     const auto& r = result.holes[0];
     const std::string described = Validation(r);
-    ASSERT_FALSE(r.candidates.empty()) << described;
-    const bool kept = r.validation_note.find("times flatter") != std::string::npos;
+    ASSERT_FALSE(r.choice.validation.candidates.empty()) << described;
+    const bool kept = r.choice.validation.note.find("times flatter") != std::string::npos;
     EXPECT_EQ(kept, bool(gated)) << described;
-    EXPECT_EQ(r.candidates[size_t(r.choice)], gated ? "coarse" : "tri-laplacian") << described;
+    EXPECT_EQ(r.choice.validation.candidates[size_t(r.choice.validation.chosen)],
+              gated ? "coarse" : "tri-laplacian")
+        << described;
     double sum = 0;
     const std::vector<double> errors = FillErrors(truth, m, scan_vertices, diagonal);
     for (double e : errors) sum += e * e;

@@ -55,7 +55,8 @@ inline void CheckCoarseFillParams(const CoarseFillParams& p) {
   RequireRange(p.threads, 0, 1024, "the thread count");
 }
 
-struct HoleFillReport {
+/// What the coarse fill did with one hole.
+struct CoarseHoleReport {
   int boundary_edges = 0;
   bool pinched = false; ///< the loop was split at a non-manifold vertex
   bool filled = false;
@@ -70,7 +71,7 @@ struct HoleFillReport {
 };
 
 struct CoarseFillResult {
-  std::vector<HoleFillReport> holes; ///< every hole considered, filled or not
+  std::vector<CoarseHoleReport> holes; ///< every hole considered, filled or not
   int skipped_by_size = 0;
   int skipped_by_selection = 0;
   int kept_as_border = 0;        ///< the longest loop, left open by keep_longest_open
@@ -185,7 +186,7 @@ inline bool IsPlanarCap(const std::vector<Eigen::Vector3d>& points,
 /// Builds one hole's patch: triangulation, refinement, fairing.
 inline HolePatch FillOneHole(const std::vector<Eigen::Vector3d>& loop_points,
                              const HoleCollar& collar, const CoarseFillParams& params,
-                             HoleFillReport& report) {
+                             CoarseHoleReport& report) {
   const int n = int(loop_points.size());
   HolePatch patch;
   patch.boundary_count = n;
@@ -252,7 +253,7 @@ inline HolePatch FillOneHole(const std::vector<Eigen::Vector3d>& loop_points,
 template <class MeshType>
 void ApplyPatches(MeshType& m, const std::vector<HoleLoop>& loops,
                   const std::vector<HolePatch>& patches, const UnitBox& box,
-                  const CoarseFillParams& params, std::vector<HoleFillReport>& reports) {
+                  const CoarseFillParams& params, std::vector<CoarseHoleReport>& reports) {
   using VertexType = typename MeshType::VertexType;
   using ScalarType = typename MeshType::ScalarType;
   size_t nv = 0, nf = 0;
@@ -356,7 +357,7 @@ CoarseFillResult CoarseFill(MeshType& m, const CoarseFillParams& params = {},
   auto fill = [&](int h) {
     const auto start = std::chrono::steady_clock::now();
     const HoleLoop& loop = loops.holes[h];
-    HoleFillReport& report = result.holes[h];
+    CoarseHoleReport& report = result.holes[h];
     report.boundary_edges = loop.EdgeCount();
     report.pinched = loop.pinched;
     report.loop = loop.vertices;
@@ -381,7 +382,7 @@ CoarseFillResult CoarseFill(MeshType& m, const CoarseFillParams& params = {},
   std::set<std::pair<int, int>> chords;
   for (int h = 0; h < count; ++h) {
     const HoleLoop& loop = loops.holes[h];
-    HoleFillReport& report = result.holes[h];
+    CoarseHoleReport& report = result.holes[h];
     if (!report.filled || !loop.pinched) continue;
     std::vector<std::pair<int, int>> mine;
     for (const auto& t : patches[h].triangles)

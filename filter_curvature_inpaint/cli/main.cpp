@@ -4,6 +4,7 @@
 #include "command_line.h"
 #include "curvature_images.h"
 #include "hole_fill.h"
+#include "hole_report.h"
 #include "inpaint/inpainter.h"
 #include "inpaint/server_pool.h"
 #include "manual_page.h"

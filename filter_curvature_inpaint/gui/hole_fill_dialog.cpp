@@ -1,5 +1,7 @@
 #include "hole_fill_dialog.h"
 
+#include "fill_one_hole.h"
+#include "hole_report.h"
 #include "pipeline.h"
 
 #include <QCheckBox>
@@ -87,8 +89,9 @@ constexpr int kLastVariation = Qt::UserRole + 2;
 int CandidateOf(const HoleVariations& hv, const std::string& kind) {
   const std::string name =
       kind == "continuation" ? "detail " + QString::number(hv.detail, 'g', 3).toStdString() : kind;
-  const auto it = std::find(hv.candidates.begin(), hv.candidates.end(), name);
-  return it == hv.candidates.end() ? -1 : int(it - hv.candidates.begin());
+  const std::vector<std::string>& candidates = hv.choice.validation.candidates;
+  const auto it = std::find(candidates.begin(), candidates.end(), name);
+  return it == candidates.end() ? -1 : int(it - candidates.begin());
 }
 
 /// An item's caption: its numbers and kind, and where the hole was validated how the kind did
@@ -100,7 +103,7 @@ QString Caption(const HoleVariations& hv, const VariationRun& g, bool automatic)
   caption += ": " + QString::fromStdString(g.kind) + (automatic ? " (auto)" : "");
   const int c = CandidateOf(hv, g.kind);
   if (c >= 0) {
-    const std::string words = TestCutsInWords(hv.candidates, hv.fake_hole_errors, size_t(c));
+    const std::string words = TestCutsInWords(hv.choice.validation, size_t(c));
     if (!words.empty()) caption += "\n" + QString::fromStdString(words);
   }
   return caption;
@@ -569,22 +572,21 @@ void HoleFillDialog::ShowHoles() {
     auto* column = new QVBoxLayout(box);
     auto* row = new QHBoxLayout;
     column->addLayout(row);
-    if (!hv.candidates.empty() || !hv.validation_note.empty()) {
+    const HoleChoice& choice = hv.choice;
+    if (!choice.validation.candidates.empty() || !choice.validation.note.empty()) {
       // The choice in words; the test cuts' numbers for whoever wants them, in the tooltip.
       auto* validation =
-          new QLabel("Automatic choice: " + QString::fromStdString(ChoiceInWords(FactsOf(hv))));
+          new QLabel("Automatic choice: " + QString::fromStdString(ChoiceInWords(choice)));
       validation->setObjectName(QString("validation_%1").arg(k + 1));
       validation->setWordWrap(true);
       validation->setToolTip(
           "Each way to fill this hole was tried on holes of its size cut into the known surface "
           "near it (test cuts); the automatic choice came closest to the surface cut out.\n" +
-          QString::fromStdString(DescribeValidation(hv.candidates, hv.validation_errors, hv.choice,
-                                                    hv.fake_holes, hv.mirror_fake_holes,
-                                                    hv.validation_note)));
+          QString::fromStdString(DescribeValidation(choice.validation)));
       column->addWidget(validation);
     }
-    if (!hv.problem.empty()) {
-      row->addWidget(new QLabel(QString::fromStdString(hv.problem)));
+    if (!choice.problem.empty()) {
+      row->addWidget(new QLabel(QString::fromStdString(choice.problem)));
       holes_layout_->insertWidget(holes_layout_->count() - 1, box);
       lists_.push_back(nullptr);
       continue;
@@ -607,8 +609,8 @@ void HoleFillDialog::ShowHoles() {
     list->setMinimumHeight(kThumbnail + 80);
     // The automatic pick: the validated choice or the best-scored continuation, or none (Skip)
     // where the coarse fill validated best.
-    const bool coarse_chosen = CoarseValidatedBest(hv);
-    const int best = AutomaticPick(hv) - 1;
+    const bool coarse_chosen = CoarseValidatedBest(choice);
+    const int best = AutomaticPick(choice) - 1;
     for (const VariationRun& group : VariationRuns(hv)) {
       // The same picture when selected: the selection shows as the frame and the bold label,
       // not as a tint that would make the variation look different.
@@ -623,11 +625,11 @@ void HoleFillDialog::ShowHoles() {
       item->setData(kLastVariation, group.last);
       // How far to trust a mirror image: how much of the fill it covers and how far the two
       // halves differ around the hole.
-      if (group.kind.rfind("symmetry", 0) == 0 && hv.mirror_covered >= 0)
+      if (group.kind.rfind("symmetry", 0) == 0 && choice.priors.mirror_covered >= 0)
         item->setToolTip(QString("From the object's mirror image, which covers %1 % of the fill; "
                                  "around the hole the two halves differ by %2 % of its radius.")
-                             .arg(std::lround(100 * hv.mirror_covered))
-                             .arg(100 * hv.mirror_ring_residual, 0, 'f', 1));
+                             .arg(std::lround(100 * choice.priors.mirror_covered))
+                             .arg(100 * choice.priors.mirror_ring_residual, 0, 'f', 1));
       if (automatic) {
         QFont f = item->font();
         f.setBold(true);
@@ -635,7 +637,7 @@ void HoleFillDialog::ShowHoles() {
       }
       list->addItem(item);
     }
-    if (hv.pick > 0) list->setCurrentRow(RowOf(list, hv.pick - 1));
+    if (choice.pick > 0) list->setCurrentRow(RowOf(list, choice.pick - 1));
     connect(list, &QListWidget::itemDoubleClicked, this, [this, k](QListWidgetItem* item) {
       const int j = item->data(kFirstVariation).toInt();
       const QImage& image = holes_[k].variations[size_t(j)];
@@ -656,21 +658,21 @@ void HoleFillDialog::ShowHoles() {
     auto* skip = new QCheckBox(coarse_chosen ? "Skip (auto)" : "Skip");
     skip->setObjectName(QString("skip_%1").arg(k + 1));
     skip->setToolTip("Leave this hole with its smooth coarse fill.");
-    skip->setChecked(hv.pick == 0);
+    skip->setChecked(choice.pick == 0);
     // Choosing a variation undoes a skip (also the automatic one); skipping clears the choice.
     connect(list, &QListWidget::currentRowChanged, this, [this, k, skip, list](int row) {
       if (row < 0) return;
-      holes_[k].pick = list->item(row)->data(kFirstVariation).toInt() + 1;
+      holes_[k].choice.pick = list->item(row)->data(kFirstVariation).toInt() + 1;
       skip->setChecked(false);
     });
     connect(skip, &QCheckBox::toggled, this, [this, k, list](bool on) {
       if (on) {
-        holes_[k].pick = 0;
+        holes_[k].choice.pick = 0;
         list->setCurrentRow(-1);
-      } else if (holes_[k].pick == 0) {
+      } else if (holes_[k].choice.pick == 0) {
         list->setCurrentRow(std::max(0, list->currentRow()));
         if (list->currentItem())
-          holes_[k].pick = list->currentItem()->data(kFirstVariation).toInt() + 1;
+          holes_[k].choice.pick = list->currentItem()->data(kFirstVariation).toInt() + 1;
       }
     });
     side->addWidget(reroll);

@@ -4,6 +4,7 @@
 
 #include "curvature_images.h"
 #include "hole_fill.h"
+#include "hole_report.h"
 #include "hole_fill_dialog.h"
 #include "pipeline.h"
 

@@ -1,0 +1,60 @@
+// The records of one hole's fill, each fact in one place: what the fake holes showed, why a
+// prior has nothing to offer, what was picked and why, how long each stage took. The preview
+// (HoleVariations) and the fill's report (HoleFillReport) embed the same records.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace curvature_inpaint {
+
+/// Stage 8b's evidence: each candidate's error on fake holes cut near the hole, and the one
+/// chosen.
+struct ValidationRecord {
+  std::vector<std::string> candidates; ///< validated ways to fill it; empty: not validated
+  std::vector<double> errors;          ///< per candidate: RMS over the fake holes / radius
+  std::vector<double> detail; ///< per candidate: detail ratio where it broke a tie, else -1
+  /// Per fake hole (those at the mirror place last): each candidate's RMS / radius there.
+  std::vector<std::vector<double>> per_fake_hole;
+  int chosen = -1; ///< index into candidates
+  /// The embedded inpainter's detail amplitude of the chosen candidate; -1 where it is
+  /// another kind of fill.
+  double chosen_amplitude = -1;
+  int fake_holes = 0;
+  int mirror_fake_holes = 0; ///< of those, cut at the hole's mirror place
+  std::string note;          ///< why there are fewer fake holes, or none
+};
+
+/// What the priors found for a hole: why it has no such variation (empty if it has one), and
+/// how well its mirror image fits where it has one.
+struct PriorNotes {
+  std::string no_symmetry, no_creases;
+  /// The share of the fill that the mirror image covers and the mirrored ring's distance from
+  /// the ring after their rigid registration (RMS, hole radii); -1 where it has none.
+  double mirror_covered = -1, mirror_ring_residual = -1;
+};
+
+/// The pick among a hole's variations and why.
+struct HoleChoice {
+  /// Per variation: "continuation", "exemplar", "symmetry", "symmetry surface", "creases",
+  /// "face" or "tri-laplacian".
+  std::vector<std::string> kinds;
+  std::vector<double> scores; ///< per variation: ScoreVariation, higher is better
+  int pick = 0;               ///< 1-based; 0: the hole keeps its coarse fill
+  bool asked = false;         ///< the pick was asked for (a number or a kind), not automatic
+  std::string pick_note;      ///< why the kind asked for was not picked; empty if it was
+  std::string problem;        ///< why the hole kept its coarse fill; empty if it did not
+  ValidationRecord validation;
+  PriorNotes priors;
+
+  /// The kind of the variation picked; empty where the hole keeps its coarse fill.
+  const std::string& PickedKind() const;
+};
+
+/// Wall time per stage for one hole, seconds. `validation` is the fake holes' (stage 8b),
+/// `inpaint` the rest of stage 8.
+struct StageSeconds {
+  double coarse = 0, images = 0, validation = 0, inpaint = 0, deform = 0;
+};
+
+} // namespace curvature_inpaint
