@@ -6,10 +6,10 @@
 //   bench_tools render MESH PNG CX CY CZ R [VX VY VZ [CURVATURE_SCALE]]
 //                                                   a view of the faces within R of C
 //   bench_tools side-by-side OUT PNG...             panels left to right
-#include "curvature_images.h"
-#include "ground_truth_image.h"
-#include "mesh_io.h"
-#include "pipeline.h"
+#include "pipeline/curvature_images.h"
+#include "pipeline/ground_truth_image.h"
+#include "io/mesh_io.h"
+#include "pipeline/pipeline.h"
 
 #include <vcg_ext/curvature_colormap.h>
 

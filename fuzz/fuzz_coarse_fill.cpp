@@ -4,8 +4,8 @@
 // Refusals (InvalidMeshError) are fine; a crash, a non-manifold result from a manifold input,
 // or a mesh changed by a refused fill are not.
 #include "fuzz_input.h"
-#include "hole_fill.h"
-#include "pipeline.h"
+#include "pipeline/hole_fill.h"
+#include "pipeline/pipeline.h"
 
 #include <cmath>
 #include <cstdint>

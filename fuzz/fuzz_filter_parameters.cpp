@@ -6,8 +6,8 @@
 // it was on failure, or filled and manifold on success. Valid sizes stay small (images of at
 // most 64 pixels, a few dozen steps) so that each input runs in well under a second.
 #include "fuzz_input.h"
-#include "hole_fill.h"
-#include "pipeline.h"
+#include "pipeline/hole_fill.h"
+#include "pipeline/pipeline.h"
 
 #include <climits>
 #include <cmath>

@@ -2,7 +2,7 @@
 // sequence of one-byte choices, and meshes built from triangle lists.
 #pragma once
 
-#include "meshlab_mesh.h"
+#include "pipeline/meshlab_mesh.h"
 
 #include <QGuiApplication>
 

@@ -1,7 +1,7 @@
 // libFuzzer target: reading a mesh file (the importers the tool and the plugin feed). The
 // first byte picks the format; the rest is the file. A clear MeshIoError or a loaded mesh
 // are fine; a crash or a hang is not.
-#include "mesh_io.h"
+#include "io/mesh_io.h"
 
 #include <cstdint>
 #include <cstdio>

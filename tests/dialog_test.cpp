@@ -2,8 +2,8 @@
 // persistence, the warning for a missing key, choosing and skipping variations, and cancel
 // during a network call.
 #include "hole_fill_dialog.h"
-#include "mesh_io.h"
-#include "pipeline.h"
+#include "io/mesh_io.h"
+#include "pipeline/pipeline.h"
 #include "symmetric_egg.h"
 
 #include <QCheckBox>

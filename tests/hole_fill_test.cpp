@@ -1,12 +1,12 @@
 // The whole method on MeshLab's mesh type: the ground-truth oracle through the chain, the
 // detail amplitude, the fake holes and their validation.
-#include "fake_holes.h"
-#include "fill_one_hole.h"
-#include "hole_fill.h"
-#include "hole_report.h"
-#include "mesh_io.h"
+#include "validation/fake_holes.h"
+#include "pipeline/fill_one_hole.h"
+#include "pipeline/hole_fill.h"
+#include "report/hole_report.h"
+#include "io/mesh_io.h"
 #include "inpaint/curvature_reading.h"
-#include "pipeline.h"
+#include "pipeline/pipeline.h"
 #include "symmetric_egg.h"
 
 #include <vcg/complex/algorithms/create/platonic.h>

@@ -2,7 +2,7 @@
 // bumps in mirrored pairs, and the holes punched over them.
 #pragma once
 
-#include "meshlab_mesh.h"
+#include "pipeline/meshlab_mesh.h"
 #include <vcg/complex/algorithms/create/platonic.h>
 #include <vcg_ext/punch_hole.h>
 

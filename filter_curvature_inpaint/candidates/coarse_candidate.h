@@ -2,7 +2,7 @@
 // fake holes. Never a variation: a hole keeps it with pick 0.
 #pragma once
 
-#include "fill_candidate.h"
+#include "candidates/fill_candidate.h"
 
 namespace curvature_inpaint {
 

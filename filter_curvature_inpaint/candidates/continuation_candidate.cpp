@@ -1,4 +1,4 @@
-#include "continuation_candidate.h"
+#include "candidates/continuation_candidate.h"
 
 namespace curvature_inpaint {
 

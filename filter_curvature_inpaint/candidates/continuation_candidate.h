@@ -3,7 +3,7 @@
 // inpainter at each detail amplitude, one candidate each ("detail 0.5").
 #pragma once
 
-#include "fill_candidate.h"
+#include "candidates/fill_candidate.h"
 
 namespace curvature_inpaint {
 

@@ -3,7 +3,7 @@
 // vcg_ext/crease_fill.h). A surface prior: on a fake hole without creases it says nothing.
 #pragma once
 
-#include "fill_candidate.h"
+#include "candidates/fill_candidate.h"
 
 namespace curvature_inpaint {
 

@@ -1,4 +1,4 @@
-#include "exemplar_candidate.h"
+#include "candidates/exemplar_candidate.h"
 
 namespace curvature_inpaint {
 

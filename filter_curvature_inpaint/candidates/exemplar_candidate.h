@@ -2,7 +2,7 @@
 // (vcg_ext/exemplar_inpainting.h); the embedded backend only, when asked for.
 #pragma once
 
-#include "fill_candidate.h"
+#include "candidates/fill_candidate.h"
 
 namespace curvature_inpaint {
 

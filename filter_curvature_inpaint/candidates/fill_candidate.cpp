@@ -1,11 +1,11 @@
-#include "fill_candidate.h"
+#include "candidates/fill_candidate.h"
 
-#include "coarse_candidate.h"
-#include "continuation_candidate.h"
-#include "crease_candidate.h"
-#include "exemplar_candidate.h"
-#include "symmetry_candidates.h"
-#include "tri_laplacian_candidate.h"
+#include "candidates/coarse_candidate.h"
+#include "candidates/continuation_candidate.h"
+#include "candidates/crease_candidate.h"
+#include "candidates/exemplar_candidate.h"
+#include "candidates/symmetry_candidates.h"
+#include "candidates/tri_laplacian_candidate.h"
 
 namespace curvature_inpaint {
 

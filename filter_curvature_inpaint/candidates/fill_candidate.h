@@ -6,10 +6,10 @@
 // line in FillCandidates().
 #pragma once
 
-#include "curvature_images.h"
-#include "hole_fill.h"
-#include "patch_fills.h"
-#include "symmetry_prior.h"
+#include "pipeline/curvature_images.h"
+#include "pipeline/hole_fill.h"
+#include "candidates/patch_fills.h"
+#include "candidates/symmetry_prior.h"
 
 #include <QImage>
 

@@ -2,7 +2,7 @@
 // only its tangents (TriLaplacianPatch).
 #pragma once
 
-#include "fill_candidate.h"
+#include "candidates/fill_candidate.h"
 
 namespace curvature_inpaint {
 

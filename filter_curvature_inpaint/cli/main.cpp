@@ -1,17 +1,17 @@
 // curvature-inpaint: the command-line front end of the pipeline. The commands, their options
 // and their help are declared in command_line.cpp; this file runs them.
-#include "batch.h"
+#include "pipeline/batch.h"
 #include "command_line.h"
-#include "curvature_images.h"
-#include "hole_fill.h"
-#include "hole_report.h"
+#include "pipeline/curvature_images.h"
+#include "pipeline/hole_fill.h"
+#include "report/hole_report.h"
 #include "inpaint/inpainter.h"
 #include "inpaint/server_pool.h"
 #include "manual_page.h"
-#include "mesh_io.h"
-#include "output_files.h"
-#include "pipeline.h"
-#include "symmetry_prior.h"
+#include "io/mesh_io.h"
+#include "io/output_files.h"
+#include "pipeline/pipeline.h"
+#include "candidates/symmetry_prior.h"
 
 #include <vcg_ext/hole_loops.h>
 #include <vcg_ext/punch_hole.h>

@@ -1,8 +1,8 @@
 #include "hole_fill_dialog.h"
 
-#include "fill_one_hole.h"
-#include "hole_report.h"
-#include "pipeline.h"
+#include "pipeline/fill_one_hole.h"
+#include "report/hole_report.h"
+#include "pipeline/pipeline.h"
 
 #include <QCheckBox>
 #include <QComboBox>

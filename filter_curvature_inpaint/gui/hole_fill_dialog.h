@@ -8,7 +8,7 @@
 // they stay in the environment, and the dialog only says whether they are set.
 #pragma once
 
-#include "hole_fill.h"
+#include "pipeline/hole_fill.h"
 
 #include <QDialog>
 

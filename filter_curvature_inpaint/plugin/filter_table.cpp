@@ -1,8 +1,8 @@
 #include "filter_table.h"
 
-#include "curvature_images.h"
-#include "hole_fill.h"
-#include "json_text.h"
+#include "pipeline/curvature_images.h"
+#include "pipeline/hole_fill.h"
+#include "report/json_text.h"
 
 #include <cstdio>
 #include <stdexcept>

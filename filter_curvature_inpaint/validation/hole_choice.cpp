@@ -1,0 +1,93 @@
+// Stage 8b, the pick (hole_choice.h).
+#include "validation/hole_choice.h"
+
+#include "inpaint/curvature_reading.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace curvature_inpaint {
+
+const std::string& HoleChoice::PickedKind() const {
+  static const std::string none;
+  return pick > 0 && size_t(pick) <= kinds.size() ? kinds[size_t(pick - 1)] : none;
+}
+
+double ScoreVariation(const QImage& variation, const QImage& mask) {
+  const int n = mask.width();
+  if (variation.size() != mask.size() || mask.height() != n) return -1e9;
+  const CurvatureReading r = ReadCurvatureImage(variation, mask);
+  const std::vector<double>& value = r.t;
+  const std::vector<char>& hole = r.hole;
+  std::vector<double> known;
+  double palette = 0;
+  int hole_pixels = 0;
+  for (size_t i = 0; i < value.size(); ++i)
+    if (hole[i])
+      palette += r.distance[i], ++hole_pixels;
+    else
+      known.push_back(value[i]);
+  if (hole_pixels == 0 || known.empty()) return 0;
+  auto percentile = [&known](size_t k) {
+    std::nth_element(known.begin(), known.begin() + k, known.end());
+    return known[k];
+  };
+  const double lo = percentile(known.size() / 20) - 0.05,
+               hi = percentile(known.size() * 19 / 20) + 0.05;
+  double jump = 0, outside = 0;
+  int border = 0;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const size_t i = size_t(y) * n + x;
+      if (!hole[i]) continue;
+      if (value[i] < lo || value[i] > hi) ++outside;
+      for (int k = 0; k < 4; ++k) {
+        const int nx = x + (k == 0) - (k == 1), ny = y + (k == 2) - (k == 3);
+        if (nx < 0 || ny < 0 || nx >= n || ny >= n || hole[size_t(ny) * n + nx]) continue;
+        jump += std::abs(value[i] - value[size_t(ny) * n + nx]);
+        ++border;
+      }
+    }
+  const double continuity = border ? jump / border : 0;
+  return -(continuity + palette / hole_pixels / 255.0 + 0.5 * outside / hole_pixels);
+}
+
+bool CoarseValidatedBest(const HoleChoice& choice) {
+  const ValidationRecord& v = choice.validation;
+  return v.chosen >= 0 && size_t(v.chosen) < v.candidates.size() &&
+         v.candidates[size_t(v.chosen)] == "coarse";
+}
+
+int AutomaticPick(const HoleChoice& choice) {
+  if (CoarseValidatedBest(choice)) return 0;
+  const ValidationRecord& v = choice.validation;
+  if (v.chosen >= 0 && size_t(v.chosen) < v.candidates.size())
+    for (size_t j = 0; j < choice.kinds.size(); ++j)
+      if (choice.kinds[j] == v.candidates[size_t(v.chosen)]) return int(j) + 1;
+  // A prior's variation is chosen only where it validated best: nothing is forced on a hole.
+  int best = 0;
+  for (size_t j = 0; j < choice.kinds.size() && j < choice.scores.size(); ++j)
+    if (choice.kinds[j] == "continuation" &&
+        (best == 0 || choice.scores[j] > choice.scores[size_t(best - 1)]))
+      best = int(j) + 1;
+  return best > 0 || choice.kinds.empty() ? best : 1;
+}
+
+void PickVariation(HoleVariations& hole, int pick, const std::string& pick_kind) {
+  HoleChoice& c = hole.choice;
+  c.scores.clear();
+  for (const QImage& v : hole.variations) c.scores.push_back(ScoreVariation(v, hole.mask));
+  c.pick = pick > 0 ? std::min(pick, int(hole.variations.size())) : AutomaticPick(c);
+  if (!pick_kind.empty()) {
+    c.pick_note = "it has no " + pick_kind + " variation";
+    for (size_t j = 0; j < c.kinds.size(); ++j)
+      if (c.kinds[j] == pick_kind) {
+        c.pick = int(j) + 1;
+        c.pick_note.clear();
+        break;
+      }
+  }
+  c.asked = pick > 0 || (!pick_kind.empty() && c.pick_note.empty());
+}
+
+} // namespace curvature_inpaint

@@ -1,0 +1,61 @@
+// Stage 8b: the choice of a hole's fill. Each candidate (the coarse fill, the embedded
+// inpainter at each detail amplitude, the priors the hole has) fills fake holes of the hole's
+// size cut into known surface near it (fake_holes.h) and is scored against the surface cut
+// out; the one that validated best is the hole's choice. Where nothing was validated, the
+// variations' scores choose. A prior's variation is picked only where it validated best.
+#pragma once
+
+#include "candidates/fill_candidate.h"
+#include "pipeline/curvature_images.h"
+#include "pipeline/hole_fill.h"
+#include "candidates/symmetry_prior.h"
+
+#include <vcg_ext/coarse_fill.h>
+#include <vcg_ext/hole_segmentation.h>
+
+#include <string>
+
+namespace curvature_inpaint {
+
+/// What the validation reads of the mesh being filled (never written while holes run).
+struct ValidationContext {
+  const CMeshO* mesh = nullptr;
+  const vcg_ext::CoarseFillResult* coarse = nullptr; ///< the holes' coarse fills (always given)
+  const vcg_ext::VertexFaces* vf = nullptr;          ///< null where no hole is validated
+  const SymmetryPrior* symmetry = nullptr;           ///< null where the prior is off
+  int threads = 1; ///< for one hole's fake holes: what the holes in parallel leave over
+};
+
+/// Whether FillHoles and InpaintHoles validate each hole on fake holes with these parameters
+/// (the embedded backend, fake holes asked for, no oracle and no hand-inpainted folder).
+bool ValidatesOnFakeHoles(const HoleFillParams& params);
+
+/// Validates hole `hi` on fake holes near it: every candidate (FillCandidates()) that the
+/// parameters turn on and the hole itself has (`hole`: its shared work, MakePatchWork), the
+/// continuation at each detail amplitude, fills each fake hole and is scored against the
+/// surface cut out. Returns the candidates, their errors and the choice (`chosen` -1, with a
+/// note, where no fake hole could be filled: the variation scores then choose alone).
+/// \pre ctx.mesh, ctx.coarse and ctx.vf are given; ValidatesOnFakeHoles(params).
+ValidationRecord ValidateHole(const HoleImage& hi, const HoleFillParams& params,
+                              const InpaintParams& inpaint, const ValidationContext& ctx,
+                              const PatchWork& hole);
+
+/// Scores a variation without ground truth (higher is better): how continuously the value
+/// field crosses the hole's border, how close the hole's colours stay to the palette, and how
+/// far its values leave the known ring's range.
+double ScoreVariation(const QImage& variation, const QImage& mask);
+
+/// Whether the fake holes found the hole's coarse fill closest (then the automatic pick is 0).
+bool CoarseValidatedBest(const HoleChoice& choice);
+
+/// The automatic pick (1-based; 0: keep the coarse fill): the validated choice where it is a
+/// prior's variation or the coarse fill, else the best-scored continuation.
+int AutomaticPick(const HoleChoice& choice);
+
+/// Scores every variation of `hole` and picks: variation `pick` (1-based) where given, else the
+/// first of kind `pick_kind` where given and the hole has one (a note says so where not),
+/// else the automatic pick.
+/// \pre pick <= the number of variations.
+void PickVariation(HoleVariations& hole, int pick, const std::string& pick_kind);
+
+} // namespace curvature_inpaint
