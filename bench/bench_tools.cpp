@@ -6,9 +6,9 @@
 //   bench_tools render MESH PNG CX CY CZ R [VX VY VZ [CURVATURE_SCALE]]
 //                                                   a view of the faces within R of C
 //   bench_tools side-by-side OUT PNG...             panels left to right
+#include "io/mesh_io.h"
 #include "pipeline/curvature_images.h"
 #include "pipeline/ground_truth_image.h"
-#include "io/mesh_io.h"
 #include "pipeline/pipeline.h"
 
 #include <vcg_ext/curvature_colormap.h>

@@ -240,6 +240,19 @@ class Pick(TempDirTest):
         out = self.path("out.ply")
         return run([TOOL, "fill", SAMPLE, out, "--fake-holes", "0", "--size", "64", *options]), out
 
+    def test_the_help_lists_exactly_the_kinds_the_tool_takes(self):
+        help_text = " ".join(run([TOOL, "fill", "--help"]).stdout.split())
+        listed = re.search(r"a kind \(([^)]*)\)", help_text)
+        self.assertIsNotNone(listed, help_text)
+        r, _ = self.fill("--pick", "no-such-kind")
+        self.assertEqual(r.returncode, 2, r.stderr)
+        taken = re.search(r"or a kind \(([^)]*)\)", r.stderr)
+        self.assertIsNotNone(taken, r.stderr)
+        self.assertEqual(listed.group(1), taken.group(1))
+        for kind in taken.group(1).split(", "):
+            r, _ = self.fill("--pick", kind)
+            self.assertEqual(r.returncode, 0, f"--pick {kind}: {r.stderr}")
+
     def test_a_variation_a_hole_lacks_is_an_error_naming_the_hole(self):
         for pick in ("6", "99"):
             r, out = self.fill("--pick", pick)

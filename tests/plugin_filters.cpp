@@ -2,8 +2,8 @@
 // to MeshLab (PLUGIN.so), in the same JSON, so a test can compare them for every release.
 // The plugin is loaded as MeshLab loads it (QPluginLoader, then the interface's qobject_cast).
 #include "filter_table.h"
-#include "report/json_text.h"
 #include "meshlab_api.h"
+#include "report/json_text.h"
 
 #include <QApplication>
 #include <QFileInfo>

@@ -21,6 +21,13 @@ const char* FillKindName(FillKind kind) {
   return kNames[static_cast<size_t>(kind)];
 }
 
+std::vector<std::string> VariationKindNames() {
+  std::vector<std::string> names;
+  for (const char* name : kNames)
+    if (name != FillKindName(FillKind::kCoarse)) names.push_back(name);
+  return names;
+}
+
 const std::vector<const FillCandidate*>& FillCandidates() {
   static const CoarseCandidate coarse;
   static const ContinuationCandidate continuation;

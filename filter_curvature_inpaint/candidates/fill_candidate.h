@@ -6,10 +6,10 @@
 // line in FillCandidates().
 #pragma once
 
-#include "pipeline/curvature_images.h"
-#include "pipeline/hole_fill.h"
 #include "candidates/patch_fills.h"
 #include "candidates/symmetry_prior.h"
+#include "pipeline/curvature_images.h"
+#include "pipeline/hole_fill.h"
 
 #include <QImage>
 
@@ -34,6 +34,10 @@ enum class FillKind {
 
 /// The kind's name at the edges (report, log, dialog, `--pick`).
 const char* FillKindName(FillKind kind);
+
+/// The names of the kinds a variation can have (all but the coarse fill), in FillKind's order:
+/// what `--pick` takes.
+std::vector<std::string> VariationKindNames();
 
 /// Where a candidate fills: a hole of the mesh, or a fake hole cut near one.
 struct PatchSite {

@@ -5,9 +5,9 @@
 // a triangle over or make the fill cross the patch.
 #pragma once
 
+#include "candidates/symmetry_prior.h"
 #include "pipeline/curvature_images.h"
 #include "pipeline/hole_fill.h"
-#include "candidates/symmetry_prior.h"
 
 #include <vcg_ext/crease_fill.h>
 #include <vcg_ext/curvature_deformation.h>

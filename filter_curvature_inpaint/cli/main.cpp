@@ -1,17 +1,18 @@
 // curvature-inpaint: the command-line front end of the pipeline. The commands, their options
 // and their help are declared in command_line.cpp; this file runs them.
-#include "pipeline/batch.h"
+#include "candidates/fill_candidate.h"
+#include "candidates/symmetry_prior.h"
 #include "command_line.h"
-#include "pipeline/curvature_images.h"
-#include "pipeline/hole_fill.h"
-#include "report/hole_report.h"
 #include "inpaint/inpainter.h"
 #include "inpaint/server_pool.h"
-#include "manual_page.h"
 #include "io/mesh_io.h"
 #include "io/output_files.h"
+#include "manual_page.h"
+#include "pipeline/batch.h"
+#include "pipeline/curvature_images.h"
+#include "pipeline/hole_fill.h"
 #include "pipeline/pipeline.h"
-#include "candidates/symmetry_prior.h"
+#include "report/hole_report.h"
 
 #include <vcg_ext/hole_loops.h>
 #include <vcg_ext/punch_hole.h>
@@ -210,9 +211,7 @@ int InpaintCommand(Args& args, const Command& command) {
 
 /// The kinds of variation --pick may name.
 const std::vector<std::string>& PickKinds() {
-  static const std::vector<std::string> kinds{"continuation",     "exemplar", "symmetry",
-                                              "symmetry surface", "creases",  "face",
-                                              "tri-laplacian"};
+  static const std::vector<std::string> kinds = curvature_inpaint::VariationKindNames();
   return kinds;
 }
 

@@ -1,8 +1,8 @@
 #include "hole_fill_dialog.h"
 
 #include "pipeline/fill_one_hole.h"
-#include "report/hole_report.h"
 #include "pipeline/pipeline.h"
+#include "report/hole_report.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -1,9 +1,9 @@
 #include "pipeline/curvature_images.h"
 
-#include "report/json_text.h"
-#include "report/montage.h"
 #include "io/output_files.h"
 #include "pipeline/pipeline.h"
+#include "report/json_text.h"
+#include "report/montage.h"
 
 #include <vcg_ext/curvature_colormap.h>
 #include <vcg_ext/parallel_for.h>

@@ -3,8 +3,8 @@
 // the pick. FillHoles and InpaintHoles schedule the holes; each hole's path is here.
 #pragma once
 
-#include "validation/hole_choice.h"
 #include "pipeline/hole_fill.h"
+#include "validation/hole_choice.h"
 
 #include <string>
 #include <vector>

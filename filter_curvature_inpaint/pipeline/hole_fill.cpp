@@ -2,11 +2,11 @@
 // (fill_one_hole.h) on the threads, and the mesh changed only once every hole is done.
 #include "pipeline/hole_fill.h"
 
-#include "pipeline/fill_one_hole.h"
 #include "inpaint/server_pool.h"
-#include "report/montage.h"
 #include "io/output_files.h"
+#include "pipeline/fill_one_hole.h"
 #include "pipeline/pipeline.h"
+#include "report/montage.h"
 
 #include <vcg_ext/crease_flips.h>
 #include <vcg_ext/parallel_for.h>

@@ -3,12 +3,12 @@
 // every stage has succeeded.
 #pragma once
 
+#include "candidates/symmetry_prior.h"
+#include "inpaint/inpainter.h"
 #include "pipeline/curvature_images.h"
 #include "pipeline/ground_truth_image.h"
-#include "report/hole_words.h"
-#include "inpaint/inpainter.h"
 #include "pipeline/hole_records.h"
-#include "candidates/symmetry_prior.h"
+#include "report/hole_words.h"
 
 #include <vcg_ext/crease_fill.h>
 #include <vcg_ext/curvature_deformation.h>

@@ -2,11 +2,11 @@
 
 #include "meshlab_api.h"
 
+#include "hole_fill_dialog.h"
 #include "pipeline/curvature_images.h"
 #include "pipeline/hole_fill.h"
-#include "report/hole_report.h"
-#include "hole_fill_dialog.h"
 #include "pipeline/pipeline.h"
+#include "report/hole_report.h"
 
 #include <QApplication>
 #include <QDir>

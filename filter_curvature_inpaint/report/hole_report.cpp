@@ -1,8 +1,8 @@
 #include "report/hole_report.h"
 
+#include "pipeline/pipeline.h"
 #include "report/hole_words.h"
 #include "report/json_text.h"
-#include "pipeline/pipeline.h"
 
 #include <QString>
 

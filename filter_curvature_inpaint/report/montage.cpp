@@ -1,8 +1,8 @@
 #include "report/montage.h"
 
+#include "io/output_files.h"
 #include "report/bitmap_font.h"
 #include "report/json_text.h"
-#include "io/output_files.h"
 
 #include <vcg_ext/curvature_colormap.h>
 

@@ -6,9 +6,9 @@
 #pragma once
 
 #include "candidates/fill_candidate.h"
+#include "candidates/symmetry_prior.h"
 #include "pipeline/curvature_images.h"
 #include "pipeline/hole_fill.h"
-#include "candidates/symmetry_prior.h"
 
 #include <vcg_ext/coarse_fill.h>
 #include <vcg_ext/hole_segmentation.h>

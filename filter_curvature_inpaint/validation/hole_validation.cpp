@@ -1,9 +1,9 @@
 // Stage 8b, the fake-hole validation (hole_choice.h).
 #include "validation/hole_choice.h"
 
-#include "validation/fake_holes.h"
 #include "candidates/patch_fills.h"
 #include "pipeline/pipeline.h"
+#include "validation/fake_holes.h"
 
 #include <vcg_ext/fill_extent.h>
 #include <vcg_ext/parallel_for.h>
