@@ -37,7 +37,7 @@ struct CreaseFillParams {
   /// Two faces with no crease edge between them beside the hole are paired from how their
   /// vertices within this many hole radii of its centre lie: farther out, past another crease,
   /// a face may run on beyond the other's surface (a top beside a wall that ends). Chosen on
-  /// the development holes (the whole context, 2, paired one fandisk hole of 64 less well).
+  /// the development holes (docs/experiments.md, "The figures behind the defaults").
   double pairing_reach = 1.5;
   /// Rounds of umbrella smoothing of the fill's vertices over the solid's boundary (each to
   /// its neighbours' mean, then back onto the solid): they spread the vertices that the
@@ -574,8 +574,8 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
   // A sliver of the coarse fill (two border vertices and a free one that stood a hair off the
   // line through them, out of the face) ends turned over when the free vertex is put in the
   // face a hair across that line. It goes to the right side of the line, in its face, at least
-  // a twentieth of the edge off it: the caller would otherwise back the whole fill off (on
-  // fandisk_701 of the benchmark, to half its way, 27 degrees off the crease's angle).
+  // a twentieth of the edge off it: the caller would otherwise back the whole fill off, and the
+  // crease would come back rounded.
   for (size_t t = 0; t < nt; ++t) {
     if (!is_fill[t]) continue;
     const auto& f = triangles[t];

@@ -125,9 +125,9 @@ inline std::vector<double> DiscreteMeanCurvature(const std::vector<Eigen::Vector
 struct DirectDeformationParams {
   int iterations = 4; ///< solves, each with normals and weights from the previous result
   /// DeformToCurvatureImage: rounds after the first, each asking for `apss_gain` times what
-  /// the last result's APSS curvature still lacks of the image's. None by default: on the
-  /// benchmark's tuning half three rounds brought the oracle's fill closer to the truth on
-  /// most holes but much further on some, and the validated fill no closer (see README).
+  /// the last result's APSS curvature still lacks of the image's. None by default: they bring
+  /// a fill further from the truth on some holes (docs/experiments.md, "The figures behind the
+  /// defaults").
   int apss_passes = 0;
   double apss_gain = 0.5;
 };

@@ -40,8 +40,8 @@ struct MirroredFillParams {
   int neighbours = 4;       ///< known points whose tangent planes the image is put on
   /// Rounds of iterative closest points that move the mirror image onto the known surface
   /// before it is read (0: the reflection as it is); the motion is kept within
-  /// `max_registration` hole radii. Chosen on the benchmark's tuning half (with 48 more
-  /// holes punched by its rule): 10 rounds or 0.5 radii gained less, 100 did worse there.
+  /// `max_registration` hole radii. Chosen on the tuning holes (docs/experiments.md, "The figures
+  /// behind the defaults").
   int registration_rounds = 30;
   double max_registration = 1.0;
 };
@@ -171,8 +171,8 @@ inline MirroredFill MirrorFill(const std::vector<Eigen::Vector3d>& points,
   // reflection, found by iterative closest points on the ring (each round registers the
   // ring's images onto their feet on the known surface), moves it towards the counterpart.
   // The feet lie along the normals, so each round slides only part of the way along the
-  // surface: the rounds are few enough to stop short of a full registration, which on the
-  // benchmark's tuning half slid onto neighbouring features more often than it helped.
+  // surface: the rounds are few enough to stop short of a full registration, which slides onto
+  // neighbouring features more often than it helps.
   std::vector<Eigen::Vector3d> reflected(n);
   for (size_t i = 0; i < n; ++i) reflected[i] = plane.Reflect(points[i]);
   Eigen::Matrix3d motion = Eigen::Matrix3d::Identity();

@@ -85,8 +85,7 @@ struct SymmetryParams {
   /// Planes that mirror less than `min_coverage` but at least this share of the samples are
   /// partial symmetries (a posed animal: its legs and head turned, much of its body still
   /// mirrored): they never make the object symmetric, but a hole whose own surroundings they
-  /// mirror may use them. Chosen on the benchmark's tuning half and 48 more holes punched by
-  /// its rule (the horse mirrors 48 %, the fandisk 43 %).
+  /// mirror may use them (docs/experiments.md, "The figures behind the defaults").
   double min_partial_coverage = 0.4;
   int samples = 2000;     ///< that vote and register
   int vote_samples = 700; ///< of those, every pair of which votes

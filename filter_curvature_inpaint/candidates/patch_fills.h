@@ -73,12 +73,12 @@ QImage SurfaceImage(const HoleImage& hi, const std::vector<Eigen::Vector3d>& poi
 /// The patch's fill carried across the creases of its context (FillAcrossCreases); empty
 /// points with a `problem` where it has none. Where it would fold or cross the patch it is
 /// backed off there only (BackOffLocally): the crease fill folds on a corner or where creases
-/// crowd, and backed off as a whole every crease of the hole came back rounded (13-30 degrees
-/// off on three fandisk development holes; 2-23 backed off locally). Only where that does not
+/// crowd, and backed off as a whole every crease of the hole comes back rounded. Only where
+/// that does not
 /// mend it is the whole fill backed off. The fill with its vertices spread over the faces
 /// (ten rounds of umbrella smoothing) is taken where it needs no backing off, or less than the
 /// vertices projected one by one: spread, the vertex put on a corner of three faces can fold its
-/// triangles (fandisk_701 of the benchmark).
+/// triangles (docs/experiments.md, "The figures behind the defaults").
 vcg_ext::CreaseFill CreasedPatch(const HoleImage& hi, const HoleFillParams& params);
 
 /// The crease prior's kind of variation: its faces meeting at creases, or where no crease runs

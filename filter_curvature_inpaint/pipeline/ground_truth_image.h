@@ -23,9 +23,8 @@ namespace curvature_inpaint {
 
 /// The fill's vertex density (Liepa's alpha) under the oracle unless one is asked for: finer
 /// than the inpainted fills' 2, since the ground truth's image holds detail that a fill of
-/// that density cannot carry. Chosen on the benchmark's tuning half with the oracle (2, 2.25,
-/// 2.5, 2.75, 3: median RMS ratio to CGAL 0.482, 0.475, 0.460, 0.468, 0.463; mean detail ratio
-/// 0.90, 0.92, 0.95, 0.96, 0.99; at 3 one hole fewer closer than CGAL).
+/// that density cannot carry. Chosen on the tuning half with the oracle (docs/experiments.md, "The
+/// figures behind the defaults").
 constexpr double kOracleDensity = 2.5;
 
 /// How much of the ground truth's curvature spread (standard deviation over the hole, in

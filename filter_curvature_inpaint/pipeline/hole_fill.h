@@ -19,9 +19,8 @@
 namespace curvature_inpaint {
 
 /// The crease prior's settings in the pipeline: a hole with no crease near it still gets the
-/// one smooth face around it extended, where there is one ("face"). On the fandisk's
-/// development holes inside one curved face (seeds 9019, 9029) that fill validated best and came
-/// out at 0.73 and 0.53 of CGAL's RMS, against 1.85 and 1.09; no other of 88 holes changed.
+/// one smooth face around it extended, where there is one ("face"): inside one curved face it
+/// validates best (docs/experiments.md, "The figures behind the defaults").
 inline vcg_ext::CreaseFillParams PipelineCreaseFill() {
   vcg_ext::CreaseFillParams p;
   p.face_without_crease = true;
@@ -34,26 +33,23 @@ struct ValidationParams {
   int fake_holes = 4;                        ///< per hole; 0: the variation score chooses alone
   bool coarse = true;                        ///< the coarse fill as it is is a candidate
   std::vector<double> details{0, 0.5, 1, 2}; ///< detail amplitudes of the embedded inpainter
-  /// Of the fake holes' images (at most the holes'). On the tuning half and 48 development
-  /// holes 128 chose as well as 256 (54 of 64 closer than CGAL either way, median RMS ratio
-  /// 0.634 against 0.652) at two thirds of the whole process's time on ten holes.
+  /// Of the fake holes' images (at most the holes'): the smallest that chooses as well as 256,
+  /// for less time (docs/experiments.md, "The figures behind the defaults").
   int image_size = 128;
   /// Where the surface around a hole is this many times flatter than around its fake holes
   /// (the spread of the known ring's mean curvature, times the hole's radius, against the
-  /// fake holes' median), they do not show how it fills: it keeps its smooth coarse fill. On
-  /// the tuning half and the development holes one hole lies above 4 (rocker_arm_603 at 17,
-  /// where the tri-Laplacian validated best and came out 8 times CGAL's RMS); 0: never.
+  /// fake holes' median), they do not show how it fills: it keeps its smooth coarse fill
+  /// (docs/experiments.md, "The figures behind the defaults"). 0: never.
   double max_flatter = 8;
   /// Candidates whose mean error is within this fraction of the lowest tie with it; among
-  /// them the detail ratio decides. On the tuning half 0 to 0.1 choose alike (15 of 16 closer
-  /// than CGAL); on the 48 development holes 0.1 chose better than 0.02 (41 against 40 closer
-  /// than CGAL, median RMS ratio 0.639 against 0.644); 0.15 lost a tuning hole.
+  /// them the detail ratio decides: four fake holes cannot tell a few per cent apart
+  /// (docs/experiments.md, "The figures behind the defaults").
   double tie = 0.1;
 };
 
 struct HoleFillParams {
   /// The fill's detail amplitude where no validation chooses it: 0, the best fixed amplitude
-  /// on the tuning half of bench/holes.tsv (0.5 and 2 were further from the ground truth).
+  /// on the tuning half (docs/experiments.md, "The figures behind the defaults").
   HoleFillParams() { inpaint.detail = 0; }
   CurvatureImagesParams images;
   InpaintParams inpaint;
@@ -76,8 +72,8 @@ struct HoleFillParams {
   SymmetryPriorParams symmetry;
   /// Embedded backend: as many more variations from the exemplar inpainter ("exemplar",
   /// patches of the known region copied in, ridges and valleys first), validated like the rest.
-  /// Off by default: on the tuning half of bench/holes.tsv the validation chose it on one hole
-  /// (koala_503), which it filled 1.3 times as far from the truth as the fill without it.
+  /// Off by default: where the validation chose it, it filled further from the truth than the
+  /// fill without it (docs/experiments.md, "The figures behind the defaults").
   bool exemplar = false;
   /// Each hole that creases of its context run into gets one more variation: the context's
   /// smooth faces extended across it until they meet ("creases", vcg_ext/crease_fill.h); a

@@ -37,10 +37,8 @@ struct FakeHoleParams {
   /// its patch takes (1 + the segmentation's context), no more.
   double piece = 2;
   /// Fake holes lie within this many hole radii of the real one: the surface just beyond the
-  /// hole's context is the most like the surface missing. On the tuning half of
-  /// bench/holes.tsv and 48 development holes, 5 (with pieces of 2) chose fills closer to the
-  /// truth than CGAL's on 53 of 64 holes, median 0.70 of its RMS; 10 (pieces of 3), 47 and 0.82
-  /// (with another seed 50 against 46, medians 0.78 and 0.77: the gain is in holes closer).
+  /// hole's context is the most like the surface missing (docs/experiments.md, "The figures behind
+  /// the defaults").
   double farthest = 5;
   int max_attempts = 48; ///< places tried per real hole
   uint32_t seed = 1;
