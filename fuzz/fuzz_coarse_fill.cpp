@@ -54,7 +54,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       HoleFillParams p;
       p.images.image_size = 32;
       p.inpaint.variations = 1;
-      p.mode = (flags & 16) ? "paper" : "direct";
+      p.mode = (flags & 16) ? curvature_inpaint::DeformationMode::kPaper
+                            : curvature_inpaint::DeformationMode::kDirect;
       p.paper.max_iterations = 20;
       FillHoles(m, p);
     } else {

@@ -84,7 +84,8 @@ std::vector<Point3m> Positions(const CMeshO& m) {
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   Choices in(data, size);
   HoleFillParams p;
-  p.mode = in.Text({"direct", "paper", "", "Direct"});
+  // Beside the two modes, a value no mode has, which the checks must refuse.
+  p.mode = static_cast<curvature_inpaint::DeformationMode>(in.Next() % 3);
   p.pick = in.Int();
   p.direct.iterations = in.Int();
   p.paper.similitude = in.Real();

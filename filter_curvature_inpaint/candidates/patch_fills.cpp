@@ -178,7 +178,7 @@ PatchDeformation DeformPatch(const HoleImage& hi, const QImage& target_image,
   moved = hi.patch.points;
   vcg_ext::DeformationResult& dr = out.result;
   FoldCheck check(hi.patch); // the rounds' and the back-off's: the coarse crossings counted once
-  if (params.mode == "direct") {
+  if (params.mode == DeformationMode::kDirect) {
     // A round that folds a triangle or makes the fill cross the patch is not taken: the
     // back-off below would have to undo the rounds before it too.
     dr = vcg_ext::DeformToCurvatureImage(

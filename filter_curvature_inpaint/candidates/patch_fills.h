@@ -45,8 +45,8 @@ struct PatchDeformation {
   int backoffs = 0;
 };
 
-/// The patch deformed to the curvature of `target_image` in `params.mode` ("direct": rounds
-/// that would fold or cross the patch are not taken; "paper": the paper's steps), then backed
+/// The patch deformed to the curvature of `target_image` in `params.mode` (direct: rounds
+/// that would fold or cross the patch are not taken; paper: the paper's steps), then backed
 /// off while it folds or crosses; not `result.solved` where four halvings did not mend it.
 PatchDeformation DeformPatch(const HoleImage& hi, const QImage& target_image,
                              const HoleFillParams& params);

@@ -268,8 +268,9 @@ curvature_inpaint::HoleFillParams ReadFillOptions(Args& args) {
   p.creases = !args.Flag("--no-creases");
   p.tri_laplacian = !args.Flag("--no-tri-laplacian");
   ReadPick(args.Text("--pick", "auto"), p);
-  p.mode = args.Text("--mode", p.mode);
-  if (p.mode != "direct" && p.mode != "paper") throw UsageError("--mode is direct or paper");
+  if (!curvature_inpaint::DeformationModeFromName(
+          args.Text("--mode", curvature_inpaint::DeformationModeName(p.mode)), &p.mode))
+    throw UsageError("--mode is direct or paper");
   p.paper.similitude = args.Number("--similitude", p.paper.similitude);
   p.paper.transformation_constant =
       args.Number("--transformation-constant", p.paper.transformation_constant);

@@ -358,7 +358,7 @@ HoleFillParams HoleFillDialog::Params() const {
   const double tc = transformation_constant_->text().toDouble(&ok);
   // Text that is not a number reaches the parameter check, which names the field.
   p.paper.transformation_constant = ok ? tc : std::numeric_limits<double>::quiet_NaN();
-  p.mode = mode_->currentText().toStdString();
+  DeformationModeFromName(mode_->currentText().toStdString(), &p.mode);
   p.images.coarse.max_hole_edges = max_hole_edges_->value();
   p.images.coarse.selected_only = selected_only_->isChecked();
   p.images.coarse.keep_longest_open = keep_longest_open_->isChecked();

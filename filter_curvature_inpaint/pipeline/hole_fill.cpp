@@ -216,10 +216,23 @@ std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& 
   return holes;
 }
 
+const char* DeformationModeName(DeformationMode mode) {
+  return mode == DeformationMode::kPaper ? "paper" : "direct";
+}
+
+bool DeformationModeFromName(const std::string& name, DeformationMode* mode) {
+  for (DeformationMode m : {DeformationMode::kDirect, DeformationMode::kPaper})
+    if (name == DeformationModeName(m)) {
+      *mode = m;
+      return true;
+    }
+  return false;
+}
+
 void CheckHoleFillParams(const HoleFillParams& p) {
   using vcg_ext::RequireRange;
-  if (p.mode != "direct" && p.mode != "paper")
-    throw vcg_ext::InvalidParameterError("unknown mode \"" + p.mode + "\" (direct or paper)");
+  if (p.mode != DeformationMode::kDirect && p.mode != DeformationMode::kPaper)
+    throw vcg_ext::InvalidParameterError("unknown deformation mode (direct or paper)");
   CheckCurvatureImagesParams(p.images);
   CheckInpaintParams(p.inpaint);
   RequireRange(p.pick, -1, 1000, "the variation to use");

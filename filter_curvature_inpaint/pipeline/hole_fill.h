@@ -27,6 +27,18 @@ inline vcg_ext::CreaseFillParams PipelineCreaseFill() {
   return p;
 }
 
+/// How a patch is deformed to its curvature image (stage 9).
+enum class DeformationMode {
+  kDirect, ///< "direct": a few solves; a round that would fold the patch is not taken
+  kPaper,  ///< "paper": the paper's steps
+};
+
+/// The mode's name at the edges (the command line, the dialog, the report).
+const char* DeformationModeName(DeformationMode mode);
+
+/// The mode a name stands for; false for a name no mode has.
+bool DeformationModeFromName(const std::string& name, DeformationMode* mode);
+
 /// Fake-hole validation (embedded backend): each hole is filled the way that came closest to
 /// the surface cut out of fake holes of its size near it.
 struct ValidationParams {
@@ -53,7 +65,7 @@ struct HoleFillParams {
   HoleFillParams() { inpaint.detail = 0; }
   CurvatureImagesParams images;
   InpaintParams inpaint;
-  std::string mode = "direct"; ///< "direct" or "paper"
+  DeformationMode mode = DeformationMode::kDirect;
   /// -1: every hole keeps its coarse fill; 0: the best score; k >= 1: variation k of every hole
   int pick = 0;
   /// Non-empty: the first variation of this kind ("creases", ...) of every hole that has one,

@@ -43,7 +43,7 @@ void UpdateBoxAndNormals(MeshModel& mm) {
 }
 
 void ReadDeformationParams(const ParamValues& v, HoleFillParams& p) {
-  p.mode = v.Enum("Mode") == 1 ? "paper" : "direct";
+  p.mode = v.Enum("Mode") == 1 ? DeformationMode::kPaper : DeformationMode::kDirect;
   p.paper.similitude = v.Float("Similitude");
   p.paper.transformation_constant = v.Float("TransformationConstant");
 }

@@ -108,7 +108,7 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
   std::ostringstream o;
   o.precision(6);
   o << "{\n  \"backend\": " << JsonQuoted(params.inpaint.backend)
-    << ",\n  \"mode\": " << JsonQuoted(params.mode) << ",\n";
+    << ",\n  \"mode\": " << JsonQuoted(DeformationModeName(params.mode)) << ",\n";
   if (result.symmetry_detected) {
     auto planes = [&o](const std::vector<vcg_ext::SymmetryPlane>& list) {
       o << "[";

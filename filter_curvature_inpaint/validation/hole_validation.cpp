@@ -96,7 +96,7 @@ bool TryFakeHole(const FakeHole& fake, const std::vector<ValidationCandidate>& c
   // The fake holes are deformed in direct mode whatever the hole's: paper mode's hundreds of
   // steps, twenty times over, would take a minute a hole.
   HoleFillParams direct = params;
-  direct.mode = "direct";
+  direct.mode = DeformationMode::kDirect;
   InpaintParams one = inpaint;
   one.detail_scale = FillSpacingPixels(f);
   // Embedded only, and perhaps on another thread than the caller's: never MeshLab's callback.
