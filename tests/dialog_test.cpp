@@ -3,6 +3,7 @@
 // during a network call.
 #include "hole_fill_dialog.h"
 #include "io/mesh_io.h"
+#include "pipeline/hole_fill.h"
 #include "pipeline/pipeline.h"
 #include "symmetric_egg.h"
 

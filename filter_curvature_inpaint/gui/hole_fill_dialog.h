@@ -8,8 +8,6 @@
 // they stay in the environment, and the dialog only says whether they are set.
 #pragma once
 
-#include "pipeline/hole_fill.h"
-
 #include <QDialog>
 
 #include <atomic>
@@ -28,8 +26,14 @@ class QPushButton;
 class QSpinBox;
 class QThread;
 class QVBoxLayout;
+// MeshLab's mesh and the pipeline's records, declared only: their headers are the heaviest of
+// the project, and this one is compiled again for Qt's meta-objects.
+class CMeshO;
 
 namespace curvature_inpaint {
+
+struct HoleFillParams;
+struct HoleVariations;
 
 class HoleFillDialog : public QDialog {
   Q_OBJECT
