@@ -23,8 +23,8 @@ const char* FillKindName(FillKind kind) {
 
 std::vector<std::string> VariationKindNames() {
   std::vector<std::string> names;
-  for (const char* name : kNames)
-    if (name != FillKindName(FillKind::kCoarse)) names.push_back(name);
+  for (size_t k = 0; k < sizeof kNames / sizeof *kNames; ++k)
+    if (static_cast<FillKind>(k) != FillKind::kCoarse) names.push_back(kNames[k]);
   return names;
 }
 
