@@ -5,7 +5,7 @@ fill, CGAL's filler and MeshLab's Close Holes, and by each candidate the validat
 
     python3 bench/run_corpus_bench.py [--part tuning|check] [--only MESH[,MESH...]]
                                       [--jobs N] [--plot] [--from-json FILE] [--no-build]
-                                      [--save FILE] [-- FILL ARGS...]
+                                      [--save FILE] [--weigh SHARE]... [-- FILL ARGS...]
 
 Per hole: hole-region RMS and Hausdorff distance as ratios to CGAL's (below 1: closer to the
 ground truth than CGAL's smooth cap), the detail ratio, watertight and manifold, every input
@@ -19,7 +19,11 @@ against the truth from the saved results without filling again (build-bench/corp
 Close Holes. Tune on the tuning part, report the check part. --jobs runs holes side by side
 (default 2; each fill with --threads 1: the choice is the same for any thread count).
 --no-build runs the tools as they are in build-bench/ (to measure an earlier build against a
-newer); --save names the results file instead of build-bench/corpus_PART.json.
+newer); --save names the results file instead of build-bench/corpus_PART.json. --weigh adds
+a row for the rule of ValidationParams::min_win_share at another value, from the saved
+candidates, without filling again: the validated choice replaces the smooth fill only where it
+is closer on the fake holes that hold SHARE of the smooth fill's error (0: the validated
+choice alone), and a hole without fake holes keeps the smooth fill.
 """
 import concurrent.futures
 import json
@@ -118,6 +122,33 @@ def distribution_line(label, rows, key):
             f"{all(r[key]['watertight'] for r in rows)} | {all(r[key]['kept'] for r in rows)} |")
 
 
+def weighed_choice(r, share):
+    """The candidate a hole gets when its validated choice must be clearly better than the
+    smooth fill (validation/hole_choice.h, ClearlyBetter), from its saved fake-hole errors."""
+    v = r["fill_report"].get("validation") or {}
+    if "choice" not in v:
+        return "coarse"
+    names = [c["name"] for c in v["candidates"]]
+    choice = v.get("not_clearly_better", v["choice"])
+    if choice == "coarse" or "coarse" not in names:
+        return choice
+    c, s = names.index(choice), names.index("coarse")
+    telling = [e for e in v["per_fake_hole"] if max(e[c], e[s]) > 1e-3]
+    total = sum(e[s] for e in telling)
+    won = sum(e[s] for e in telling if e[c] < e[s])
+    return choice if total > 0 and won >= share * total else "coarse"
+
+
+def weigh(rows, share):
+    """`rows` with the fill replaced by the candidate the rule at `share` chooses."""
+    out = []
+    for r in rows:
+        w = dict(r)
+        w["fill"] = r["candidates"][weighed_choice(r, share)]
+        out.append(w)
+    return out
+
+
 def choice_words(r):
     v = r["fill_report"].get("validation") or {}
     if "choice" in v:
@@ -125,7 +156,7 @@ def choice_words(r):
     return v.get("note", "not validated")[:60]
 
 
-def print_report(rows, part):
+def print_report(rows, part, weighed=()):
     print(f"\nCorpus holes, {part} part ({len(rows)} holes): RMS and Hausdorff ratios to CGAL's "
           "on the same hole (below 1: closer to the ground truth)\n")
     print(f"| method | RMS < CGAL | median | 90th pct | worst | > {WORSE_RMS}x | worst Hausdorff | "
@@ -134,6 +165,8 @@ def print_report(rows, part):
     for key, label in (("fill", "fill"), ("coarse", "coarse"), ("close", "Close Holes"),
                        ("cgal", "CGAL")):
         print(distribution_line(label, rows, key))
+    for share in weighed:
+        print(distribution_line(f"fill, rule {share:g}", weigh(rows, share), "fill"))
     worst = sorted(rows, key=lambda r: -ratio(r["fill"]["rms"], r["cgal"]["rms"]))[:12]
     print("\nThe fill's worst holes: RMS ratio to CGAL's, the coarse fill's, what was chosen\n")
     print("| hole | edges | fill | coarse | chosen |")
@@ -166,8 +199,10 @@ def plot_sorted(path, rows, part):
 
 
 def main():
-    options, fill_args = check_args(__doc__, flags=("--plot", "--no-build"),
-                                    valued=("--part", "--only", "--jobs", "--from-json", "--save"))
+    options, fill_args = check_args(
+        __doc__, flags=("--plot", "--no-build"),
+        valued=("--part", "--only", "--jobs", "--from-json", "--save"), repeated=("--weigh",))
+    weighed = [float(w) for w in options["--weigh"]]
     part = options.get("--part", "tuning")
     if part not in ("tuning", "check"):
         print(f"run_corpus_bench.py: --part is tuning or check, not {part}", file=sys.stderr)
@@ -204,7 +239,7 @@ def main():
             os.replace(saved + ".part", saved)
         finally:
             shutil.rmtree(tmp, ignore_errors=True)
-    print_report(rows, part)
+    print_report(rows, part, weighed)
     if "--plot" in options:
         plot_sorted(os.path.join(DOCS, "corpus_rms_ratio_sorted.png"), rows, part)
 

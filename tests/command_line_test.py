@@ -290,7 +290,7 @@ class LogAndMontage(TempDirTest):
         self.assertEqual(len(lines), 3, r.stderr)
         for k, line in enumerate(lines, 1):
             self.assertRegex(line, rf"^hole {k} \(\d+ edges\): [a-z ,']+, (better than the smooth fill|"
-                                   r"best) on \d of \d test cuts$")
+                                   r"best) on \d of \d test cuts(, \d+ % closer)?$")
         self.assertNotIn("validation 1:", r.stderr)  # the numbers only with --verbose
         self.assertNotIn("ms", r.stderr)
         self.assertEqual(r.stderr.splitlines()[-1], f"wrote {out}: 3 holes filled, 0 left open")

@@ -1,6 +1,8 @@
 // Stage 8b (validation/): fake holes cut near a hole, their error against the surface cut out,
 // and the choice they make.
 #include "hole_fill_fixtures.h"
+#include "report/hole_words.h"
+#include "validation/hole_choice.h"
 
 namespace {
 
@@ -192,7 +194,9 @@ TEST(FakeHoles, OneIsCutAtTheMirrorPlaceWhereItIsKnownSurface) {
   for (const auto& f : across) EXPECT_FALSE(f->at_mirror_place);
 }
 
-TEST(FakeHoles, ASmallClosedPartFallsBackToTheVariationScoreAndSaysSo) {
+// With no room for a fake hole there is no evidence: the hole keeps the smooth fill, the least
+// surprising one, never a guess from the variations' scores.
+TEST(FakeHoles, ASmallClosedPartKeepsTheSmoothFillAndSaysWhy) {
   CMeshO m;
   vcg::tri::Sphere(m, 4);
   vcg::tri::UpdateBounding<CMeshO>::Box(m);
@@ -203,17 +207,58 @@ TEST(FakeHoles, ASmallClosedPartFallsBackToTheVariationScoreAndSaysSo) {
   ASSERT_EQ(result.holes.size(), 1u);
   const auto& r = result.holes[0];
   EXPECT_TRUE(r.choice.validation.candidates.empty());
+  EXPECT_TRUE(r.choice.validation.no_evidence);
   EXPECT_NE(r.choice.validation.note.find("no room"), std::string::npos)
       << r.choice.validation.note;
-  EXPECT_NE(r.choice.validation.note.find("variation score"), std::string::npos)
+  EXPECT_NE(r.choice.validation.note.find("keeps the smooth fill"), std::string::npos)
       << r.choice.validation.note;
   // The report says so too, for those who read it instead of the log.
   const std::string json = curvature_inpaint::HoleFillReportJson(result, p);
   EXPECT_NE(json.find("\"validation\": {\"note\": \"no room"), std::string::npos) << json;
-  EXPECT_TRUE(r.choice.problem.empty()) << r.choice.problem;
-  EXPECT_GE(r.choice.pick, 1);
+  EXPECT_EQ(r.choice.problem, r.choice.validation.note);
+  EXPECT_EQ(r.choice.pick, 0);
+  const std::string words = curvature_inpaint::ChoiceInWords(r.choice);
+  EXPECT_EQ(words.rfind("kept the smooth fill: no room", 0), 0u) << words;
+  EXPECT_EQ(words.find("; with nothing"), std::string::npos) << words;
   const auto census = curvature_inpaint::CountHoles(m);
   EXPECT_TRUE(census.loop_edges.empty());
+}
+
+// A shape replaces the smooth fill only where it is closer on the fake holes that matter: those
+// that hold at least half of the smooth fill's error.
+TEST(FakeHoles, AShapeReplacesTheSmoothFillOnlyWhereItIsClearlyCloser) {
+  using curvature_inpaint::ClearlyBetter;
+  const curvature_inpaint::ValidationParams vp;
+  // Candidate 1 against the smooth fill, candidate 0; errors per fake hole.
+  EXPECT_TRUE(ClearlyBetter({{1.0, 0.7}}, 1, 0, vp)) << "one fake hole, closer";
+  EXPECT_FALSE(ClearlyBetter({{1.0, 1.2}}, 1, 0, vp)) << "one fake hole, farther";
+  EXPECT_FALSE(ClearlyBetter({{0.1, 0.01}, {1.0, 1.1}}, 1, 0, vp))
+      << "closer only where the smooth fill is close already, farther where it is far off";
+  EXPECT_TRUE(ClearlyBetter({{1.0, 0.3}, {0.2, 0.25}}, 1, 0, vp))
+      << "closer where the smooth fill is far off, a little farther where every fill is close";
+  EXPECT_FALSE(ClearlyBetter({{1.0, 0.5}, {1.2, 1.3}}, 1, 0, vp))
+      << "closer on half the fake holes, the half with less of the error";
+  EXPECT_TRUE(ClearlyBetter({{0, 0}, {0, 0}, {0.2, 0.01}}, 1, 0, vp))
+      << "two fake holes on flat faces, which both fill exactly, and one that tells them apart";
+  EXPECT_FALSE(ClearlyBetter({{0, 0.002}}, 1, 0, vp))
+      << "a flat face the smooth fill closes exactly and the candidate does not";
+}
+
+// The words of a hole that kept its smooth fill because the best candidate was not clearly
+// better: which one did best, and on how many test cuts.
+TEST(FakeHoles, AChoiceWithoutAClearWinnerSaysSo) {
+  curvature_inpaint::HoleChoice c;
+  c.kinds = {"continuation", "symmetry surface"};
+  c.pick = 0;
+  c.validation.candidates = {"coarse", "symmetry surface"};
+  c.validation.errors = {0.2, 0.185};
+  c.validation.per_fake_hole = {{0.1, 0.05}, {0.3, 0.32}};
+  c.validation.fake_holes = 2;
+  c.validation.chosen = 0;
+  c.validation.not_clear = 1;
+  EXPECT_EQ(curvature_inpaint::ChoiceInWords(c),
+            "kept the smooth fill: no clear winner (the mirror image of the other side did best, "
+            "better than the smooth fill on 1 of 2 test cuts, 8 % closer)");
 }
 
 TEST(FakeHoles, TheValidatedChoiceIsTheSameForAnyThreadCount) {

@@ -6,6 +6,7 @@
 #include "symmetric_egg.h"
 
 #include <map>
+#include <random>
 #include <set>
 
 namespace {
@@ -291,6 +292,8 @@ TEST(Creases, AHoleOnACubesEdgeAndOneOnItsCornerComeBackSharp) {
   for (const auto& r : result.holes) {
     ASSERT_TRUE(r.choice.problem.empty()) << r.choice.problem;
     EXPECT_EQ(r.kind, "creases") << Validation(r);
+    EXPECT_TRUE(r.choice.priors.has_creases);
+    EXPECT_GT(r.crease_flips, 0);
   }
   // Every fill vertex on the cube (the edge straight, the corner where the three faces meet)
   // within 1 % of the edge's length; every fill triangle has its corners on one face and lies
@@ -355,6 +358,35 @@ double WorstFillDistance(const CMeshO& m, size_t first, Distance distance) {
 // A hole on a plate's corner takes the whole vertical edge there, top to bottom: no crease edge
 // of the two side faces is left beside it, yet they must meet at that edge, not run on through
 // each other.
+// On an organic surface (a scan's noise on a sphere) a fill's bends are no creases: flipping
+// its edges onto them would carve ridges into it. No crease runs into these holes, so none of
+// their fills' edges is flipped, whatever the fill.
+TEST(Creases, AFillOnAnOrganicSurfaceIsNeverFlippedOntoCreases) {
+  CMeshO m;
+  vcg::tri::Sphere(m, 5);
+  std::mt19937 noise(7);
+  std::uniform_real_distribution<double> radius(0.997, 1.003);
+  for (auto& v : m.vert) v.P() *= Scalarm(radius(noise));
+  for (const Point3m at : {Point3m(1, 0, 0), Point3m(0, 1, 0), Point3m(0, 0, -1)})
+    vcg_ext::PunchHole(m, at, Scalarm(0.3));
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+  HoleFillParams p = SmallImages();
+  p.validation.fake_holes = 0;
+  for (const char* kind : {"continuation", "tri-laplacian"}) {
+    CMeshO filled;
+    curvature_inpaint::CopyMesh(m, filled);
+    p.pick_kind = kind;
+    p.inpaint.detail = 2; // the boldest bends the continuation makes
+    const auto result = FillHoles(filled, p);
+    ASSERT_EQ(result.holes.size(), 3u);
+    for (const auto& r : result.holes) {
+      EXPECT_EQ(r.kind, kind);
+      EXPECT_FALSE(r.choice.priors.has_creases) << r.choice.priors.no_creases;
+      EXPECT_EQ(r.crease_flips, 0) << kind;
+    }
+  }
+}
+
 TEST(Creases, AHoleThatTakesAPlatesWholeCornerEdgeBringsItBack) {
   CMeshO m;
   MakeCube(m, 24);
@@ -532,12 +564,12 @@ TEST(Creases, AHoleInOneFaceWithNoCreaseNearGetsTheFaceExtended) {
     const auto result = FillHoles(m, p);
     ASSERT_EQ(result.holes.size(), 1u);
     const auto& r = result.holes[0];
-    ASSERT_TRUE(r.choice.problem.empty()) << r.choice.problem;
     if (!face) {
       EXPECT_EQ(r.choice.priors.no_creases, "no crease runs into it");
       EXPECT_NE(r.kind, "face");
       continue;
     }
+    ASSERT_TRUE(r.choice.problem.empty()) << r.choice.problem;
     EXPECT_EQ(r.kind, "face") << r.choice.priors.no_creases;
     ASSERT_GT(m.vert.size(), scan_vertices);
     for (size_t v = scan_vertices; v < m.vert.size(); ++v)

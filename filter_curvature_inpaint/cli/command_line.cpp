@@ -71,9 +71,10 @@ const Options kFill = Join(
      {
          {"--variations", "N", "curvature images the inpainter completes per hole (default 4)"},
          {"--pick", "WHICH",
-          "auto (default: the fill that did best on test cuts near the hole), coarse (the smooth "
-          "fill), a variation number, a kind (continuation, exemplar, tri-laplacian, symmetry, "
-          "symmetry surface, creases, face), or one entry per hole: A,B,..."},
+          "auto (default: the fill that did clearly best on test cuts near the hole, else the "
+          "smooth fill), coarse (the smooth fill), a variation number, a kind (continuation, "
+          "exemplar, tri-laplacian, symmetry, symmetry surface, creases, face), or one entry "
+          "per hole: A,B,..."},
          {"--fake-holes", "K",
           "test cuts per hole that choose its fill (default 4; 0: faster, the image score "
           "chooses; use it on scans with hundreds of holes)"},

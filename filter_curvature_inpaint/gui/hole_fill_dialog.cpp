@@ -581,7 +581,8 @@ void HoleFillDialog::ShowHoles() {
       validation->setWordWrap(true);
       validation->setToolTip(
           "Each way to fill this hole was tried on holes of its size cut into the known surface "
-          "near it (test cuts); the automatic choice came closest to the surface cut out.\n" +
+          "near it (test cuts); the automatic choice came clearly closest to the surface cut "
+          "out, or else is the smooth fill.\n" +
           QString::fromStdString(DescribeValidation(choice.validation)));
       column->addWidget(validation);
     }
@@ -608,9 +609,9 @@ void HoleFillDialog::ShowHoles() {
     list->setGridSize(QSize(kThumbnail + 24, kThumbnail + 64));
     list->setMinimumHeight(kThumbnail + 80);
     // The automatic pick: the validated choice or the best-scored continuation, or none (Skip)
-    // where the coarse fill validated best.
-    const bool coarse_chosen = CoarseValidatedBest(choice);
+    // where the hole keeps the smooth fill.
     const int best = AutomaticPick(choice) - 1;
+    const bool coarse_chosen = best < 0;
     for (const VariationRun& group : VariationRuns(hv)) {
       // The same picture when selected: the selection shows as the frame and the bold label,
       // not as a tint that would make the variation look different.

@@ -4,6 +4,8 @@
 #include "candidates/patch_fills.h"
 #include "pipeline/pipeline.h"
 
+#include <vcg_ext/hole_creases.h>
+
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -246,11 +248,20 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleContext& ctx
     InpaintFromBackend(hi, ctx, hv);
   }
   hv.seconds.inpaint = Since(t) - hv.seconds.validation;
+  hv.choice.priors.has_creases = vcg_ext::CreaseLinesIntoHole(hi.patch) >= 2;
   if (pick > int(hv.variations.size()))
     throw std::invalid_argument("hole " + std::to_string(k + 1) + " has no variation " +
                                 std::to_string(pick) + "; it has " + ListVariations(hv.choice));
   PickVariation(hv, pick, pick_kind);
   return hv;
+}
+
+/// Why the automatic pick kept the coarse fill, in a log's words.
+std::string WhyItKeepsTheCoarseFill(const HoleChoice& c) {
+  if (c.validation.no_evidence) return c.validation.note;
+  if (c.validation.not_clear >= 0)
+    return "no fill did clearly better than the coarse fill on the fake holes; it keeps it";
+  return "the coarse fill validated best; it keeps it";
 }
 
 HoleOutcome FillOneHole(const HoleImage& hi, size_t k, const HoleContext& ctx) {
@@ -264,8 +275,7 @@ HoleOutcome FillOneHole(const HoleImage& hi, size_t k, const HoleContext& ctx) {
     hv = InpaintHole(hi, k, ctx);
     HoleChoice& c = hv.choice;
     if (c.problem.empty() && c.pick == 0)
-      c.problem = (c.pick_note.empty() ? "" : c.pick_note + ", and ") +
-                  "the coarse fill validated best; it keeps it";
+      c.problem = (c.pick_note.empty() ? "" : c.pick_note + ", and ") + WhyItKeepsTheCoarseFill(c);
   }
   HoleFillReport& report = out.report;
   report.hole = hi.hole;

@@ -151,12 +151,15 @@ void ApplyToMesh(const std::vector<HoleImage>& holes, std::map<int, HoleDone>& d
     for (size_t i = 0; i < d.points.size(); ++i)
       if (hi.is_new[i])
         m.vert[hi.patch.vertices[i]].P() = result.coarse.box.FromUnit<Scalarm>(d.points[i]);
+    if (!d.report.choice.priors.has_creases) continue;
     for (int f : result.coarse.holes[size_t(hi.hole)].new_faces)
       moved_fills.push_back(f), hole_of[f] = k;
   }
   // The fills' triangles laid along the sharp edges they have (a crease fill's, a mirrored
   // ridge's), here, where the mesh, not the patch, holds them: the patch's triangles are the
-  // coarse fill's, which every candidate shares. One pass for every hole.
+  // coarse fill's, which every candidate shares. One pass for every hole. Only where creases
+  // of the known surface run into the hole: on an organic surface (a face, a neck) a fill's
+  // bends are no creases, and flipping onto them carves ridges into it.
   std::vector<int> flipped;
   vcg_ext::FlipFillEdgesOntoCreases(m, moved_fills, {}, &flipped);
   for (size_t i = 0; i < flipped.size(); i += 2) ++result.holes[hole_of[flipped[i]]].crease_flips;

@@ -57,6 +57,11 @@ struct ValidationParams {
   /// them the detail ratio decides: four fake holes cannot tell a few per cent apart
   /// (docs/experiments.md, "The figures behind the defaults").
   double tie = 0.1;
+  /// A candidate other than the smooth fill replaces it only where it is closer on the fake
+  /// holes that hold at least this share of the smooth fill's error: where the smooth fill
+  /// does well, any fill does, and a win there says little about the hole (docs/experiments.md,
+  /// "2026-12-07: A choice that knows how sure it is").
+  double min_win_share = 0.5;
 };
 
 struct HoleFillParams {

@@ -17,6 +17,12 @@ struct ValidationRecord {
   /// Per fake hole (those at the mirror place last): each candidate's RMS / radius there.
   std::vector<std::vector<double>> per_fake_hole;
   int chosen = -1; ///< index into candidates
+  /// The candidate that did best on the fake holes but not clearly better than the smooth
+  /// fill, which the hole then keeps (`chosen`); -1: none.
+  int not_clear = -1;
+  /// No fake hole could be cut or filled near the hole: with no evidence it keeps the smooth
+  /// fill (`note` says why).
+  bool no_evidence = false;
   /// The embedded inpainter's detail amplitude of the chosen candidate; -1 where it is
   /// another kind of fill.
   double chosen_amplitude = -1;
@@ -29,6 +35,9 @@ struct ValidationRecord {
 /// how well its mirror image fits where it has one.
 struct PriorNotes {
   std::string no_symmetry, no_creases;
+  /// Crease lines of the known surface reach the hole from two sides or more
+  /// (vcg_ext/hole_creases.h): only there are the fill's edges flipped onto creases.
+  bool has_creases = false;
   /// The share of the fill that the mirror image covers and the mirrored ring's distance from
   /// the ring after their rigid registration (RMS, hole radii); -1 where it has none.
   double mirror_covered = -1, mirror_ring_residual = -1;

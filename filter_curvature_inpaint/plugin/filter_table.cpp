@@ -167,7 +167,9 @@ FilterSpec HoleFill() {
                   "Embedded backend: cut this many holes of each hole's size into the known "
                   "surface near it, fill them every way (the coarse fill, detail amplitudes 0 to "
                   "2, the priors below) and fill the real hole the way that came closest to the "
-                  "surface cut out (0-16). 0: every hole gets the detail below."));
+                  "surface cut out where it is also closer than the coarse fill on the fake holes "
+                  "that hold half of the coarse fill's error, else with the coarse fill (0-16). 0: "
+                  "every hole gets the detail below."));
   p.push_back(Float("Detail", d.inpaint.detail, "Detail",
                     "Embedded backend, with no fake holes: the amplitude of the synthesised "
                     "detail, relative to the surroundings' own (0-10; 0: the smooth continuation "

@@ -25,6 +25,8 @@ std::string DescribeValidation(const ValidationRecord& v) {
     o << (c ? ", " : " ") << candidates[c] << " "
       << QString::number(100 * errors[c], 'f', 2).toStdString();
   if (choice >= 0 && size_t(choice) < candidates.size()) o << "; chose " << candidates[choice];
+  if (v.not_clear >= 0 && size_t(v.not_clear) < candidates.size())
+    o << " (" << candidates[size_t(v.not_clear)] << " did best, not clearly)";
   if (!v.note.empty()) o << " (" << v.note << ")";
   return o.str();
 }
@@ -156,6 +158,8 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
         o << "]";
       }
       o << "], \"choice\": " << JsonQuoted(v.candidates[size_t(v.chosen)]);
+      if (v.not_clear >= 0)
+        o << ", \"not_clearly_better\": " << JsonQuoted(v.candidates[size_t(v.not_clear)]);
       if (!v.note.empty()) o << ", \"note\": " << JsonQuoted(v.note);
       o << "}";
     } else if (!v.note.empty()) {

@@ -15,7 +15,8 @@ int SmoothIndex(const std::vector<std::string>& candidates) {
 
 /// A problem without its trailing "; it keeps its coarse fill" (the sentence says so already).
 std::string Reason(std::string problem) {
-  for (const char* tail : {"; it keeps its coarse fill", "; it keeps it"}) {
+  for (const char* tail : {"; it keeps its coarse fill", "; it keeps it",
+                           "; with nothing to go on it keeps the smooth fill"}) {
     const std::string t = tail;
     if (problem.size() > t.size() && problem.compare(problem.size() - t.size(), t.size(), t) == 0)
       problem.erase(problem.size() - t.size());
@@ -58,7 +59,14 @@ std::string TestCutsInWords(const ValidationRecord& v, size_t c) {
   if (cuts == 0) return "";
   const std::string of = std::to_string(wins) + " of " + std::to_string(cuts) +
                          (cuts == 1 ? " test cut" : " test cuts");
-  return (int(c) == smooth ? "best on " : "better than the smooth fill on ") + of;
+  if (int(c) == smooth) return "best on " + of;
+  std::string by;
+  if (c < v.errors.size() && size_t(smooth) < v.errors.size() && v.errors[size_t(smooth)] > 0) {
+    const double gain = 100 * (1 - v.errors[c] / v.errors[size_t(smooth)]);
+    by = gain >= 0 ? ", " + std::to_string(int(std::lround(gain))) + " % closer"
+                   : ", " + std::to_string(int(std::lround(-gain))) + " % farther on average";
+  }
+  return "better than the smooth fill on " + of + by;
 }
 
 std::string ChoiceInWords(const HoleChoice& f) {
@@ -66,6 +74,10 @@ std::string ChoiceInWords(const HoleChoice& f) {
   const bool validated = v.chosen >= 0 && size_t(v.chosen) < v.candidates.size();
   if (!f.problem.empty() || f.pick <= 0) {
     const std::string note = f.pick_note.empty() ? "" : " (" + f.pick_note + ")";
+    if (validated && v.not_clear >= 0 && size_t(v.not_clear) < v.candidates.size() && f.pick <= 0)
+      return "kept the smooth fill: no clear winner (" +
+             KindInWords(v.candidates[size_t(v.not_clear)]) + " did best, " +
+             TestCutsInWords(v, size_t(v.not_clear)) + ")" + note;
     if (validated && v.candidates[size_t(v.chosen)] == "coarse" && f.pick <= 0)
       return "kept the smooth fill, " + TestCutsInWords(v, size_t(v.chosen)) + note;
     return "kept the smooth fill" + (f.problem.empty() ? note : ": " + Reason(f.problem));

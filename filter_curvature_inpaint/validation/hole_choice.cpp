@@ -52,6 +52,20 @@ double ScoreVariation(const QImage& variation, const QImage& mask) {
   return -(continuity + palette / hole_pixels / 255.0 + 0.5 * outside / hole_pixels);
 }
 
+bool ClearlyBetter(const std::vector<std::vector<double>>& per_fake_hole, size_t c, size_t smooth,
+                   const ValidationParams& vp) {
+  // A fake hole that both fill within 0.1 % of its radius (a flat face every fill closes
+  // exactly) shows nothing between them.
+  const double exact = 1e-3;
+  double won = 0, total = 0;
+  for (const std::vector<double>& e : per_fake_hole) {
+    if (std::max(e[c], e[smooth]) <= exact) continue;
+    total += e[smooth];
+    if (e[c] < e[smooth]) won += e[smooth];
+  }
+  return total > 0 && won >= vp.min_win_share * total;
+}
+
 bool CoarseValidatedBest(const HoleChoice& choice) {
   const ValidationRecord& v = choice.validation;
   return v.chosen >= 0 && size_t(v.chosen) < v.candidates.size() &&
@@ -59,7 +73,7 @@ bool CoarseValidatedBest(const HoleChoice& choice) {
 }
 
 int AutomaticPick(const HoleChoice& choice) {
-  if (CoarseValidatedBest(choice)) return 0;
+  if (CoarseValidatedBest(choice) || choice.validation.no_evidence) return 0;
   const ValidationRecord& v = choice.validation;
   if (v.chosen >= 0 && size_t(v.chosen) < v.candidates.size())
     for (size_t j = 0; j < choice.kinds.size(); ++j)

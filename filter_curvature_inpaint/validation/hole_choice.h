@@ -1,8 +1,10 @@
 // Stage 8b: the choice of a hole's fill. Each candidate (the coarse fill, the embedded
 // inpainter at each detail amplitude, the priors the hole has) fills fake holes of the hole's
 // size cut into known surface near it (fake_holes.h) and is scored against the surface cut
-// out; the one that validated best is the hole's choice. Where nothing was validated, the
-// variations' scores choose. A prior's variation is picked only where it validated best.
+// out; the one that validated best is the hole's choice where it is clearly better than the
+// smooth fill, which the hole keeps otherwise, and where no fake hole could be filled. Where
+// the validation is off, the variations' scores choose. A prior's variation is picked only
+// where it validated best.
 #pragma once
 
 #include "candidates/fill_candidate.h"
@@ -14,6 +16,7 @@
 #include <vcg_ext/hole_segmentation.h>
 
 #include <string>
+#include <vector>
 
 namespace curvature_inpaint {
 
@@ -33,9 +36,11 @@ bool ValidatesOnFakeHoles(const HoleFillParams& params);
 /// Validates hole `hi` on fake holes near it: every candidate (FillCandidates()) that the
 /// parameters turn on and the hole itself has (`hole`: its shared work, MakePatchWork), the
 /// continuation at each detail amplitude, fills each fake hole and is scored against the
-/// surface cut out. Returns the candidates, their errors and the choice (`chosen` -1, with a
-/// note, where no fake hole could be filled: the variation scores then choose alone).
-/// \pre ctx.mesh, ctx.coarse and ctx.vf are given; ValidatesOnFakeHoles(params).
+/// surface cut out. Returns the candidates, their errors and the choice: the best validated
+/// where it is clearly better than the smooth fill (ClearlyBetter), else the smooth fill
+/// (`not_clear` then names the best); `no_evidence`, with a note and no candidates, where no fake
+/// hole could be filled. \pre ctx.mesh, ctx.coarse and ctx.vf are given;
+/// ValidatesOnFakeHoles(params).
 ValidationRecord ValidateHole(const HoleImage& hi, const HoleFillParams& params,
                               const InpaintParams& inpaint, const ValidationContext& ctx,
                               const PatchWork& hole);
@@ -45,11 +50,21 @@ ValidationRecord ValidateHole(const HoleImage& hi, const HoleFillParams& params,
 /// far its values leave the known ring's range.
 double ScoreVariation(const QImage& variation, const QImage& mask);
 
+/// Whether the fake holes show candidate `c` clearly closer than the smooth fill `smooth`
+/// (`per_fake_hole`: each candidate's error on each fake hole): closer on the fake holes that
+/// hold at least vp.min_win_share of the smooth fill's error. A candidate that wins only where
+/// the smooth fill is already close, and loses where it is far off, keeps the smooth fill: the
+/// real hole is the hard case. Fake holes that both fill exactly (a flat face) do not count.
+/// \pre every row of per_fake_hole has entries c and smooth.
+bool ClearlyBetter(const std::vector<std::vector<double>>& per_fake_hole, size_t c, size_t smooth,
+                   const ValidationParams& vp);
+
 /// Whether the fake holes found the hole's coarse fill closest (then the automatic pick is 0).
 bool CoarseValidatedBest(const HoleChoice& choice);
 
 /// The automatic pick (1-based; 0: keep the coarse fill): the validated choice where it is a
-/// prior's variation or the coarse fill, else the best-scored continuation.
+/// prior's variation or the coarse fill, the coarse fill where the validation had no evidence,
+/// else the best-scored continuation.
 int AutomaticPick(const HoleChoice& choice);
 
 /// Scores every variation of `hole` and picks: variation `pick` (1-based) where given, else the

@@ -33,6 +33,7 @@ double RingCurvature(const HoleImage& h) {
 /// One candidate of the validation: a way to fill, at one of its amplitudes where it has them.
 struct ValidationCandidate {
   const FillCandidate* fill = nullptr;
+  FillKind kind = FillKind::kCoarse;
   std::string name;     ///< as the report, the log and the dialog list it
   size_t amplitude = 0; ///< index into its ValidatedAmplitudes
   double detail = -1;   ///< that amplitude; -1: it has none
@@ -47,9 +48,10 @@ std::vector<ValidationCandidate> ValidationCandidates(const HoleFillParams& para
   for (const FillCandidate* fill : FillCandidates()) {
     if (!fill->Enabled(params) || !fill->Applies(hole)) continue;
     const std::vector<double> amplitudes = fill->ValidatedAmplitudes(params);
-    if (amplitudes.empty()) c.push_back({fill, FillKindName(fill->KindAt(hole))});
+    const FillKind kind = fill->KindAt(hole);
+    if (amplitudes.empty()) c.push_back({fill, kind, FillKindName(kind)});
     for (size_t i = 0; i < amplitudes.size(); ++i)
-      c.push_back({fill, "detail " + QString::number(amplitudes[i], 'g', 3).toStdString(), i,
+      c.push_back({fill, kind, "detail " + QString::number(amplitudes[i], 'g', 3).toStdString(), i,
                    amplitudes[i]});
   }
   return c;
@@ -188,6 +190,14 @@ size_t ChooseCandidate(const std::vector<double>& error, const std::vector<FakeH
   return choice;
 }
 
+/// The index of the smooth (coarse) fill among the candidates; candidates.size() where it is
+/// not one.
+size_t SmoothFillIndex(const std::vector<ValidationCandidate>& candidates) {
+  for (size_t c = 0; c < candidates.size(); ++c)
+    if (candidates[c].kind == FillKind::kCoarse) return c;
+  return candidates.size();
+}
+
 /// Fake holes cut where the surface curves far more than around the hole (a near-flat spot
 /// among a machined part's fillets) reward a prior for bending the fill as they bend; the
 /// hole's own flat surroundings ask for the smooth cap. Whether the hole's ring is more than
@@ -252,8 +262,9 @@ ValidationRecord ValidateHole(const HoleImage& hi, const HoleFillParams& params,
   }
   if (trials.empty()) {
     record.candidates.clear();
+    record.no_evidence = true;
     record.note = (why.empty() ? std::string("no fake hole near it could be filled") : why) +
-                  "; the variation score chooses";
+                  "; with nothing to go on it keeps the smooth fill";
     return record;
   }
   std::vector<double> error(candidates.size(), 0.0);
@@ -262,10 +273,16 @@ ValidationRecord ValidateHole(const HoleImage& hi, const HoleFillParams& params,
   for (double& e : error) e /= double(trials.size());
   std::vector<double> detail;
   size_t choice = ChooseCandidate(error, trials, params, detail);
+  const size_t smooth = SmoothFillIndex(candidates);
   std::string flatter;
-  if (vp.coarse && FlatterThanFakeHoles(hi, trials, vp.max_flatter, flatter)) {
-    choice = 0; // the coarse fill
+  if (smooth < candidates.size() && FlatterThanFakeHoles(hi, trials, vp.max_flatter, flatter)) {
+    choice = smooth;
     why = why.empty() ? flatter : why + "; " + flatter;
+  }
+  if (smooth < candidates.size() && choice != smooth &&
+      !ClearlyBetter(record.per_fake_hole, choice, smooth, vp)) {
+    record.not_clear = int(choice);
+    choice = smooth;
   }
   record.errors = error;
   record.detail = detail;
