@@ -21,7 +21,8 @@ extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size < 2) return 0;
-  static const char* const kBackends[] = {"openai", "sd-webui", "stability", "comfyui"};
+  static const Backend kBackends[] = {Backend::kOpenAi, Backend::kSdWebUi, Backend::kStability,
+                                      Backend::kComfyUi};
   static const long kStatuses[] = {200, 200, 200, 200, 201, 302, 400, 401, 404, 429, 500, 503};
   // The answers, in order, separated by "\n----\n".
   const std::string rest(reinterpret_cast<const char*>(data) + 2, size - 2), sep = "\n----\n";

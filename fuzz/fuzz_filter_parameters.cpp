@@ -109,7 +109,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   p.images.apss_rings = in.Int();
   p.images.low_percentile = in.Real();
   p.images.high_percentile = in.Real();
-  p.inpaint.backend = in.Text({"embedded", "", "no-such-backend"});
+  // A backend's name is read where a person gives it, and an unknown one refused there.
+  try {
+    p.inpaint.backend = ParseBackend(in.Text({"embedded", "", "no-such-backend"}));
+  } catch (const vcg_ext::InvalidParameterError&) {
+    return 0;
+  }
   p.inpaint.variations = in.Int();
   p.inpaint.detail = in.Real();
   p.inpaint.size = in.Int();

@@ -184,6 +184,15 @@ class NeverOverwrite(TempDirTest):
                 self.assertNotIn("Coarse fill", r.stderr)
         self.assertEqual(sorted(os.listdir(self.tmp)), ["dir.ply", "scan.ply"])
 
+    def test_an_unknown_backend_is_one_line_naming_the_known_ones(self):
+        scan = self.scan()
+        r = run([TOOL, "fill", scan, self.path("out.ply"), "--backend", "dalle"])
+        self.assertNotEqual(r.returncode, 0)
+        self.assertEqual(r.stderr.splitlines(),
+                         ['curvature-inpaint: unknown backend "dalle" '
+                          '(embedded, openai, sd-webui, stability, comfyui)'])
+        self.assertEqual(sorted(os.listdir(self.tmp)), ["scan.ply"])
+
 
 class HoleNumbering(TempDirTest):
     def five_holes(self):

@@ -109,7 +109,7 @@ private slots:
     QCOMPARE(Find<QLineEdit>(d, "prompt")->text(), QString("a relief"));
     Find<QPushButton>(d, "resetPrompts")->click();
     QVERIFY(Find<QLineEdit>(d, "prompt")->text().startsWith("Color map representing curvatures"));
-    QCOMPARE(d.Params().inpaint.backend, std::string("sd-webui"));
+    QVERIFY(d.Params().inpaint.backend == curvature_inpaint::Backend::kSdWebUi);
   }
 
   void settings_persist_but_keys_never() {

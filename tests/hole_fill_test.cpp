@@ -208,7 +208,7 @@ TEST(Cancel, HolesOnSeveralServersStopTogetherAndTheCallbackRunsOnTheCallersThre
   for (const auto& v : m.vert) before.push_back(v.cP());
   SilentServer a, b;
   HoleFillParams p = SmallImages();
-  p.inpaint.backend = "comfyui";
+  p.inpaint.backend = curvature_inpaint::Backend::kComfyUi;
   p.inpaint.urls = {a.Url(), b.Url()}; // both holes in flight at once, one on another thread
   p.inpaint.http.max_retries = 0;
   g_caller = std::this_thread::get_id();

@@ -10,7 +10,7 @@ class ExemplarCandidate final : public FillCandidate {
 public:
   FillKind KindAt(const PatchWork&) const override { return FillKind::kExemplar; }
   bool Enabled(const HoleFillParams& params) const override {
-    return params.exemplar && params.inpaint.backend == "embedded";
+    return params.exemplar && params.inpaint.backend == Backend::kEmbedded;
   }
   bool Seeded() const override { return true; }
   std::vector<CandidateVariation> Variations(const PatchSite& site,

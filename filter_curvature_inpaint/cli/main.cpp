@@ -168,7 +168,8 @@ std::vector<std::string> ReadUrls(Args& args) {
 /// The backend's options, shared by `inpaint` and `fill` (which differ only in how they name
 /// the number of variations).
 void ReadBackendOptions(Args& args, curvature_inpaint::InpaintParams& p) {
-  p.backend = args.Text("--backend", p.backend);
+  p.backend = curvature_inpaint::ParseBackend(
+      args.Text("--backend", curvature_inpaint::BackendName(p.backend)));
   const std::vector<std::string> urls = ReadUrls(args);
   if (urls.size() == 1) p.url = urls[0];
   if (urls.size() > 1) p.urls = urls;
@@ -194,7 +195,8 @@ int InpaintCommand(Args& args, const Command& command) {
   if (image.isNull()) throw std::runtime_error(files[0] + ": not a readable image");
   if (mask.isNull()) throw std::runtime_error(files[1] + ": not a readable image");
   curvature_inpaint::CheckFolderWritable(files[2]);
-  std::fprintf(stderr, "inpainting with %s, %d variations\n", p.backend.c_str(), p.variations);
+  std::fprintf(stderr, "inpainting with %s, %d variations\n",
+               curvature_inpaint::BackendName(p.backend).c_str(), p.variations);
   std::unique_ptr<curvature_inpaint::ServerPool> pool;
   if (!p.urls.empty()) pool = std::make_unique<curvature_inpaint::ServerPool>(p.urls, p.per_server);
   p.pool = pool.get();

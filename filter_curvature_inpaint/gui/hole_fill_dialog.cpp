@@ -25,6 +25,7 @@
 #include <QThread>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -80,6 +81,12 @@ QString Key(const QString& backend, const char* field) {
   return backend + "/" + field;
 }
 
+/// The backend the list shows (its items are InpaintBackends(), in order).
+Backend SelectedBackend(const QComboBox& list) {
+  const std::vector<Backend>& backends = InpaintBackends();
+  return backends[size_t(std::max(0, std::min(int(backends.size()) - 1, list.currentIndex())))];
+}
+
 /// Where a list item keeps the variations it stands for (0-based, first and last).
 constexpr int kFirstVariation = Qt::UserRole + 1;
 constexpr int kLastVariation = Qt::UserRole + 2;
@@ -129,7 +136,7 @@ HoleFillDialog::HoleFillDialog(const CMeshO& mesh, QWidget* parent)
 
   backend_ = new QComboBox;
   backend_->setObjectName("backend");
-  for (const auto& b : InpaintBackends()) backend_->addItem(QString::fromStdString(b));
+  for (Backend b : InpaintBackends()) backend_->addItem(QString::fromStdString(BackendName(b)));
   backend_->setToolTip("Who completes the curvature images: embedded (offline, this computer), "
                        "OpenAI (DALL-E 2), a Stable Diffusion web UI, Stability AI, or ComfyUI.");
   form->addRow("&Backend", backend_);
@@ -341,7 +348,7 @@ HoleFillDialog::~HoleFillDialog() {
 
 HoleFillParams HoleFillDialog::Params() const {
   HoleFillParams p;
-  p.inpaint.backend = backend_->currentText().toStdString();
+  p.inpaint.backend = SelectedBackend(*backend_);
   p.inpaint.url = url_->text().trimmed().toStdString();
   p.inpaint.model = model_->text().trimmed().toStdString();
   p.inpaint.prompt = prompt_->text().toStdString();
@@ -377,20 +384,19 @@ void HoleFillDialog::BackendChanged() {
     s.setValue(Key(backend_shown_, "negative_prompt"), negative_prompt_->text());
   }
   backend_shown_ = backend;
-  const BackendInfo& info = DescribeBackend(backend.toStdString());
+  const BackendInfo& info = DescribeBackend(SelectedBackend(*backend_));
   url_->setText(s.value(Key(backend, "url")).toString());
   url_->setPlaceholderText(QString::fromStdString(info.default_url));
-  url_->setEnabled(backend != "embedded");
+  url_->setEnabled(info.remote);
   model_->setText(s.value(Key(backend, "model")).toString());
   model_->setPlaceholderText(QString::fromStdString(info.default_model));
   model_->setEnabled(!info.default_model.empty());
-  prompt_->setText(
-      s.value(Key(backend, "prompt"), QString::fromStdString(DefaultPrompt(backend.toStdString())))
-          .toString());
-  prompt_->setEnabled(backend != "embedded");
+  prompt_->setText(s.value(Key(backend, "prompt"),
+                           QString::fromStdString(DefaultPrompt(SelectedBackend(*backend_))))
+                       .toString());
+  prompt_->setEnabled(info.remote);
   negative_prompt_->setText(s.value(Key(backend, "negative_prompt")).toString());
-  negative_prompt_->setEnabled(backend == "sd-webui" || backend == "stability" ||
-                               backend == "comfyui");
+  negative_prompt_->setEnabled(info.negative_prompt);
   const QString var = QString::fromStdString(info.key_variable);
   if (var.isEmpty()) {
     key_->setText("none needed");
@@ -409,8 +415,7 @@ void HoleFillDialog::BackendChanged() {
 }
 
 void HoleFillDialog::ResetPrompts() {
-  const std::string backend = backend_->currentText().toStdString();
-  prompt_->setText(QString::fromStdString(DefaultPrompt(backend)));
+  prompt_->setText(QString::fromStdString(DefaultPrompt(SelectedBackend(*backend_))));
   negative_prompt_->clear();
   url_->clear();
   model_->clear();

@@ -171,10 +171,11 @@ QImage Scaled(const QImage& img, int w, int h) {
 // --- the services -----------------------------------------------------------------------
 
 std::vector<QImage> OpenAi(const QImage& image, const QImage& mask, const InpaintParams& p) {
-  const std::string backend = "openai";
+  const std::string backend = BackendName(Backend::kOpenAi);
   const std::string key = Env("OPENAI_API_KEY");
   if (key.empty()) throw InpaintError(backend + ": set OPENAI_API_KEY to the API key to use");
-  const std::string model = p.model.empty() ? DescribeBackend(backend).default_model : p.model;
+  const std::string model =
+      p.model.empty() ? DescribeBackend(Backend::kOpenAi).default_model : p.model;
   if (model != "dall-e-2" && model != "gpt-image-1")
     throw InpaintError(backend + ": unknown model \"" + model + "\" (dall-e-2 or gpt-image-1)");
   int size = 1024;
@@ -185,11 +186,11 @@ std::vector<QImage> OpenAi(const QImage& image, const QImage& mask, const Inpain
   const QImage rgba = WithTransparentHole(Scaled(image, size, size), Scaled(mask, size, size));
   HttpRequest req;
   req.method = "POST";
-  req.url =
-      Trimmed(p.url.empty() ? (Env("OPENAI_BASE_URL").empty() ? DescribeBackend(backend).default_url
-                                                              : Env("OPENAI_BASE_URL"))
-                            : p.url) +
-      "/images/edits";
+  req.url = Trimmed(p.url.empty() ? (Env("OPENAI_BASE_URL").empty()
+                                         ? DescribeBackend(Backend::kOpenAi).default_url
+                                         : Env("OPENAI_BASE_URL"))
+                                  : p.url) +
+            "/images/edits";
   req.headers = {"Authorization: Bearer " + key};
   const std::string png = Png(rgba);
   const std::string sz = std::to_string(size) + "x" + std::to_string(size);
@@ -212,7 +213,7 @@ std::vector<QImage> OpenAi(const QImage& image, const QImage& mask, const Inpain
 }
 
 std::vector<QImage> SdWebUi(const QImage& image, const QImage& mask, const InpaintParams& p) {
-  const std::string backend = "sd-webui";
+  const std::string backend = BackendName(Backend::kSdWebUi);
   const int size = std::max(64, (p.size > 0 ? p.size : 512) / 8 * 8);
   QJsonObject body;
   body["init_images"] = QJsonArray{
@@ -236,7 +237,7 @@ std::vector<QImage> SdWebUi(const QImage& image, const QImage& mask, const Inpai
   body["sampler_name"] = "Euler a";
   HttpRequest req;
   req.method = "POST";
-  req.url = Trimmed(p.url.empty() ? DescribeBackend("sd-webui").default_url : p.url) +
+  req.url = Trimmed(p.url.empty() ? DescribeBackend(Backend::kSdWebUi).default_url : p.url) +
             "/sdapi/v1/img2img";
   req.headers = {"Content-Type: application/json"};
   const std::string auth = Env("SD_WEBUI_AUTH");
@@ -258,7 +259,7 @@ std::vector<QImage> SdWebUi(const QImage& image, const QImage& mask, const Inpai
 }
 
 std::vector<QImage> Stability(const QImage& image, const QImage& mask, const InpaintParams& p) {
-  const std::string backend = "stability";
+  const std::string backend = BackendName(Backend::kStability);
   const std::string key = Env("STABILITY_API_KEY");
   if (key.empty()) throw InpaintError(backend + ": set STABILITY_API_KEY to the API key to use");
   const int w = image.width(), h = image.height();
@@ -266,7 +267,7 @@ std::vector<QImage> Stability(const QImage& image, const QImage& mask, const Inp
   for (int i = 0; i < std::max(1, p.variations); ++i) {
     HttpRequest req;
     req.method = "POST";
-    req.url = Trimmed(p.url.empty() ? DescribeBackend(backend).default_url : p.url) +
+    req.url = Trimmed(p.url.empty() ? DescribeBackend(Backend::kStability).default_url : p.url) +
               "/v2beta/stable-image/edit/inpaint";
     req.headers = {"authorization: Bearer " + key, "accept: application/json"};
     req.parts = {
@@ -305,8 +306,9 @@ QString JsonString(const std::string& s) {
 }
 
 std::vector<QImage> ComfyUi(const QImage& image, const QImage& mask, const InpaintParams& p) {
-  const std::string backend = "comfyui";
-  const std::string base = Trimmed(p.url.empty() ? DescribeBackend("comfyui").default_url : p.url);
+  const std::string backend = BackendName(Backend::kComfyUi);
+  const std::string base =
+      Trimmed(p.url.empty() ? DescribeBackend(Backend::kComfyUi).default_url : p.url);
   const int size = std::max(64, (p.size > 0 ? p.size : 512) / 8 * 8);
   auto upload = [&](const QImage& img, const std::string& name) {
     HttpRequest req;
@@ -387,38 +389,58 @@ std::vector<QImage> ComfyUi(const QImage& image, const QImage& mask, const Inpai
 
 } // namespace
 
-const std::vector<std::string>& InpaintBackends() {
-  static const std::vector<std::string> names{"embedded", "openai", "sd-webui", "stability",
-                                              "comfyui"};
-  return names;
+const std::vector<Backend>& InpaintBackends() {
+  static const std::vector<Backend> backends{Backend::kEmbedded, Backend::kOpenAi,
+                                             Backend::kSdWebUi, Backend::kStability,
+                                             Backend::kComfyUi};
+  return backends;
 }
 
-const BackendInfo& DescribeBackend(const std::string& backend) {
-  static const std::map<std::string, BackendInfo> info{
-      {"embedded", {"", "", false, ""}},
-      {"openai", {"https://api.openai.com/v1", "OPENAI_API_KEY", true, "dall-e-2"}},
-      {"sd-webui", {"http://127.0.0.1:7860", "SD_WEBUI_AUTH", false, ""}},
-      {"stability", {"https://api.stability.ai", "STABILITY_API_KEY", true, ""}},
-      {"comfyui", {"http://127.0.0.1:8188", "", false, ""}}};
-  const auto it = info.find(backend);
-  if (it == info.end())
-    throw InpaintError("unknown backend \"" + backend +
-                       "\" (embedded, openai, sd-webui, stability, comfyui)");
-  return it->second;
+std::string BackendName(Backend backend) {
+  switch (backend) {
+  case Backend::kEmbedded:
+    return "embedded";
+  case Backend::kOpenAi:
+    return "openai";
+  case Backend::kSdWebUi:
+    return "sd-webui";
+  case Backend::kStability:
+    return "stability";
+  case Backend::kComfyUi:
+    return "comfyui";
+  }
+  return "embedded";
 }
 
-std::string DefaultPrompt(const std::string& backend) {
-  if (backend == "openai") return kDallePrompt;
-  if (backend == "embedded") return "";
+Backend ParseBackend(const std::string& name) {
+  std::string known;
+  for (Backend b : InpaintBackends()) {
+    if (BackendName(b) == name) return b;
+    known += (known.empty() ? "" : ", ") + BackendName(b);
+  }
+  throw vcg_ext::InvalidParameterError("unknown backend \"" + name + "\" (" + known + ")");
+}
+
+const BackendInfo& DescribeBackend(Backend backend) {
+  static const std::map<Backend, BackendInfo> info{
+      {Backend::kEmbedded, {"", "", false, "", false, false}},
+      {Backend::kOpenAi,
+       {"https://api.openai.com/v1", "OPENAI_API_KEY", true, "dall-e-2", true, false}},
+      {Backend::kSdWebUi, {"http://127.0.0.1:7860", "SD_WEBUI_AUTH", false, "", true, true}},
+      {Backend::kStability,
+       {"https://api.stability.ai", "STABILITY_API_KEY", true, "", true, true}},
+      {Backend::kComfyUi, {"http://127.0.0.1:8188", "", false, "", true, true}}};
+  return info.at(backend);
+}
+
+std::string DefaultPrompt(Backend backend) {
+  if (backend == Backend::kOpenAi) return kDallePrompt;
+  if (backend == Backend::kEmbedded) return "";
   return kDiffusionPrompt;
 }
 
 void CheckInpaintParams(const InpaintParams& p) {
   using vcg_ext::RequireRange;
-  const auto& names = InpaintBackends();
-  if (std::find(names.begin(), names.end(), p.backend) == names.end())
-    throw vcg_ext::InvalidParameterError("unknown backend \"" + p.backend +
-                                         "\" (embedded, openai, sd-webui, stability, comfyui)");
   RequireRange(p.variations, 1, 10, "the number of variations");
   RequireRange(p.size, 0, 4096, "the service's image size (pixels)");
   RequireRange(p.detail, 0, 10, "the embedded inpainter's detail");
@@ -434,25 +456,29 @@ void CheckInpaintParams(const InpaintParams& p) {
 }
 
 std::vector<QImage> Inpaint(const QImage& image, const QImage& mask, const InpaintParams& p) {
-  const std::string& b = p.backend;
+  const std::string b = BackendName(p.backend);
   CheckInpaintParams(p);
   if (image.isNull() || mask.isNull() || image.size() != mask.size())
     throw InpaintError(b + ": the image and the mask must be images of the same size");
-  if (p.pool && b != "embedded") return p.pool->Inpaint(image, mask, p);
+  if (p.pool && p.backend != Backend::kEmbedded) return p.pool->Inpaint(image, mask, p);
   std::vector<QImage> raw;
-  if (b == "embedded")
+  switch (p.backend) {
+  case Backend::kEmbedded:
     raw = InpaintEmbedded(image, mask, p);
-  else if (b == "openai")
+    break;
+  case Backend::kOpenAi:
     raw = OpenAi(image, mask, p);
-  else if (b == "sd-webui")
+    break;
+  case Backend::kSdWebUi:
     raw = SdWebUi(image, mask, p);
-  else if (b == "stability")
+    break;
+  case Backend::kStability:
     raw = Stability(image, mask, p);
-  else if (b == "comfyui")
+    break;
+  case Backend::kComfyUi:
     raw = ComfyUi(image, mask, p);
-  else
-    throw InpaintError("unknown backend \"" + b +
-                       "\" (embedded, openai, sd-webui, stability, comfyui)");
+    break;
+  }
   // Back to the image's size, with the known pixels exactly as they were.
   const QImage original = image.convertToFormat(QImage::Format_RGB32);
   std::vector<QImage> out;

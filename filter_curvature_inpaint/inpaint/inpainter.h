@@ -19,9 +19,13 @@ namespace curvature_inpaint {
 
 class ServerPool;
 
+/// Who completes the curvature images: the embedded inpainter (offline) or a remote service.
+/// Named only where a person meets it (BackendName, ParseBackend).
+enum class Backend { kEmbedded, kOpenAi, kSdWebUi, kStability, kComfyUi };
+
 struct InpaintParams {
-  std::string backend = "embedded"; ///< embedded, openai, sd-webui, stability, comfyui
-  std::string url;                  ///< service address; empty: the backend's default
+  Backend backend = Backend::kEmbedded;
+  std::string url; ///< service address; empty: the backend's default
   /// Several servers of the backend (a pool; `url` is then ignored): FillHoles spreads the
   /// holes over them, at most `per_server` requests in flight on each.
   std::vector<std::string> urls;
@@ -49,26 +53,34 @@ public:
   explicit InpaintError(const std::string& what) : std::runtime_error(what) {}
 };
 
-/// Throws vcg_ext::InvalidParameterError naming the first parameter out of its range, or an
-/// unknown backend.
+/// Throws vcg_ext::InvalidParameterError naming the first parameter out of its range.
 void CheckInpaintParams(const InpaintParams& params);
 
-/// The backends this build knows.
-const std::vector<std::string>& InpaintBackends();
+/// The backends this build knows, in the order the filter's list and the dialog show them.
+const std::vector<Backend>& InpaintBackends();
+
+/// The backend's name on the command line, in scripts, settings and reports ("embedded",
+/// "openai", "sd-webui", "stability", "comfyui").
+std::string BackendName(Backend backend);
+
+/// The backend of that name. Throws vcg_ext::InvalidParameterError naming the known ones.
+Backend ParseBackend(const std::string& name);
 
 /// What a front end needs to know of a backend to set it up.
 struct BackendInfo {
-  std::string default_url;   ///< where it is reached when no URL is given; empty: nowhere
-  std::string key_variable;  ///< environment variable with its credentials; empty: none
-  bool key_required = false; ///< whether the service refuses without them
-  std::string default_model; ///< empty: the service has no model choice
+  std::string default_url;      ///< where it is reached when no URL is given; empty: nowhere
+  std::string key_variable;     ///< environment variable with its credentials; empty: none
+  bool key_required = false;    ///< whether the service refuses without them
+  std::string default_model;    ///< empty: the service has no model choice
+  bool remote = true;           ///< reached over HTTP: it takes a URL and a prompt
+  bool negative_prompt = false; ///< it takes what the image should not show
 };
 
-/// The backend's defaults. Throws InpaintError for an unknown backend.
-const BackendInfo& DescribeBackend(const std::string& backend);
+/// The backend's defaults.
+const BackendInfo& DescribeBackend(Backend backend);
 
 /// The prompt the backend gets when none is given (the paper's, where it gives one).
-std::string DefaultPrompt(const std::string& backend);
+std::string DefaultPrompt(Backend backend);
 
 /// Completes the hole of `image` (white pixels of `mask`, same size) into params.variations
 /// images of the same size. Throws InpaintError, or vcg_ext::CancelledError when

@@ -40,7 +40,7 @@ bool UsesSymmetry(const HoleFillParams& p) {
 /// Whether the holes are inpainted here (the embedded backend, or images given in a folder)
 /// rather than by a service: they then run on every thread.
 bool InpaintsLocally(const HoleFillParams& params) {
-  return !params.inpainted_dir.empty() || params.inpaint.backend == "embedded";
+  return !params.inpainted_dir.empty() || params.inpaint.backend == Backend::kEmbedded;
 }
 
 /// How many holes a service is asked for at once: one at a time from a single service (which
@@ -51,7 +51,7 @@ int RequestsAtOnce(const ServerPool* pool) {
 
 /// The pool of a run's servers, where several are given for a service.
 std::unique_ptr<ServerPool> MakePool(const InpaintParams& p) {
-  if (p.urls.empty() || p.backend == "embedded") return nullptr;
+  if (p.urls.empty() || p.backend == Backend::kEmbedded) return nullptr;
   return std::make_unique<ServerPool>(p.urls, p.per_server);
 }
 

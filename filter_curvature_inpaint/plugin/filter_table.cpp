@@ -52,6 +52,13 @@ void AddPaperModeParams(std::vector<ParamSpec>& params) {
                          "How far a differing vertex moves per step, in the unit box."));
 }
 
+/// The backends' names, in the order of InpaintBackends(): the filter's list.
+std::vector<std::string> BackendNames() {
+  std::vector<std::string> names;
+  for (Backend b : InpaintBackends()) names.push_back(BackendName(b));
+  return names;
+}
+
 FilterSpec CoarseHoleFill() {
   const vcg_ext::CoarseFillParams d;
   FilterSpec f{
@@ -144,7 +151,7 @@ FilterSpec HoleFill() {
                true,
                {}};
   auto& p = f.params;
-  p.push_back(Enum("Backend", 0, InpaintBackends(), "Inpainting backend",
+  p.push_back(Enum("Backend", 0, BackendNames(), "Inpainting backend",
                    "embedded: offline, the default. openai: DALL-E 2 or gpt-image-1 (key in "
                    "OPENAI_API_KEY). sd-webui: AUTOMATIC1111, Forge or SD.Next (Basic auth from "
                    "SD_WEBUI_AUTH). stability: Stability AI (STABILITY_API_KEY). comfyui: a "

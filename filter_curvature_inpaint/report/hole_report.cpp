@@ -109,7 +109,7 @@ std::vector<std::string> DescribeHolesInWords(const HoleFillResult& result) {
 std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParams& params) {
   std::ostringstream o;
   o.precision(6);
-  o << "{\n  \"backend\": " << JsonQuoted(params.inpaint.backend)
+  o << "{\n  \"backend\": " << JsonQuoted(BackendName(params.inpaint.backend))
     << ",\n  \"mode\": " << JsonQuoted(DeformationModeName(params.mode)) << ",\n";
   if (result.symmetry_detected) {
     auto planes = [&o](const std::vector<vcg_ext::SymmetryPlane>& list) {

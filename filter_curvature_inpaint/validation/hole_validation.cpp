@@ -225,7 +225,7 @@ bool FlatterThanFakeHoles(const HoleImage& hi, const std::vector<FakeHoleTrial>&
 } // namespace
 
 bool ValidatesOnFakeHoles(const HoleFillParams& p) {
-  return p.validation.fake_holes > 0 && p.inpaint.backend == "embedded" && !p.oracle &&
+  return p.validation.fake_holes > 0 && p.inpaint.backend == Backend::kEmbedded && !p.oracle &&
          p.inpainted_dir.empty();
 }
 
