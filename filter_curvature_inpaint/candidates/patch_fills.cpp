@@ -123,11 +123,10 @@ int BackOff(const vcg_ext::PatchMesh& patch, std::vector<Eigen::Vector3d>& moved
   return BackOff(patch, moved, check);
 }
 
-// Rounds of spreading of the crease fill's vertices: chosen on the development holes of the
-// fandisk (5 to 20 mend the same ones; 10 kept nefertiti_203 of the tuning half least backed off).
+// Rounds of spreading of the crease fill's vertices, and of backing it off where it folds:
+// chosen on the fandisk's development holes (docs/experiments.md, "The figures behind the
+// defaults").
 constexpr int kCreaseRelaxRounds = 10;
-// Rounds of backing the crease fill off where it folds: on the fandisk's development holes 6,
-// 12 and 24 give the same fills.
 constexpr int kCreaseBackOffRounds = 12;
 
 } // namespace
