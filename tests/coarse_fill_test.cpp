@@ -1,6 +1,7 @@
 #include "test_mesh.h"
 
 #include <vcg_ext/coarse_fill.h>
+#include <wrap/io_trimesh/import_ply.h>
 
 #include <gtest/gtest.h>
 
@@ -129,6 +130,58 @@ TEST(CoarseFill, PinchedHoleIsSplitAndFilled) {
   const auto topo = test::Inspect(m);
   EXPECT_EQ(topo.non_manifold_edges, 0u);
   EXPECT_EQ(topo.loops, 1u); // only the outer border
+}
+
+/// How far the farthest new vertex of `hole` lies from the plane of its loop, and that plane.
+std::pair<double, vcg_ext::LoopPlane> FarthestFromLoopPlane(const Mesh& m,
+                                                            const vcg_ext::CoarseHoleReport& hole) {
+  auto point = [&](int v) {
+    const auto& p = m.vert[size_t(v)].cP();
+    return Eigen::Vector3d(p[0], p[1], p[2]);
+  };
+  std::vector<Eigen::Vector3d> loop;
+  for (int v : hole.loop) loop.push_back(point(v));
+  const vcg_ext::LoopPlane plane = vcg_ext::FitLoopPlane(loop);
+  double farthest = 0;
+  for (int v : hole.new_vertices)
+    farthest = std::max(farthest, std::abs((point(v) - plane.centre).dot(plane.normal)));
+  return {farthest, plane};
+}
+
+// A statue's cut base (the lion statue's underside: 322 edges, the loop 1.8 % of its size off
+// its plane, the walls beside it at about 57 degrees and not turning further out) comes back
+// flat, not as a dome below the base: the statue stands again.
+TEST(CoarseFill, AStatuesCutBaseIsCappedFlat) {
+  Mesh m;
+  const std::string path = std::string(CI_SHARED_MESHES) + "/lionstatue.ply";
+  ASSERT_EQ(vcg::tri::io::ImporterPLY<Mesh>::Open(m, path.c_str()), 0) << path;
+
+  const auto result = vcg_ext::CoarseFill(m);
+
+  ASSERT_EQ(result.holes.size(), 1u);
+  ASSERT_TRUE(result.holes[0].filled);
+  EXPECT_TRUE(result.holes[0].planar_cap);
+  const auto farthest = FarthestFromLoopPlane(m, result.holes[0]);
+  ASSERT_GT(farthest.second.off_plane, 0.005 * farthest.second.size) << "not IsPlanarCap's case";
+  EXPECT_LE(farthest.first, farthest.second.off_plane + 0.001 * farthest.second.size);
+}
+
+// A hole that takes a sphere's cap 100 degrees wide: its loop is nearly planar and the sphere
+// leaves the loop's plane at about 50 degrees, as a statue's walls leave its base, but further
+// out it keeps turning: a dome is missing, not a base.
+TEST(CoarseFill, ASpheresCapIsNoCutBase) {
+  Mesh m;
+  test::MakeSphere(m, 1.0f);
+  test::PunchSphere(m, kDirections[0], 1.0f, 100);
+
+  const auto result = vcg_ext::CoarseFill(m);
+
+  ASSERT_EQ(result.FilledCount(), 1);
+  EXPECT_FALSE(result.holes[0].planar_cap);
+  const auto farthest = FarthestFromLoopPlane(m, result.holes[0]);
+  ASSERT_LE(farthest.second.off_plane, 0.02 * farthest.second.size) << "not IsFlatBase's case";
+  // The cap rises 1 - cos(50 degrees) = 0.36 above its loop's plane.
+  EXPECT_GT(farthest.first, 0.2);
 }
 
 TEST(CoarseFill, HolesOverTheSizeLimitStayOpen) {

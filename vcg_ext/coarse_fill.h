@@ -5,6 +5,7 @@
 // them are done, so an exception (invalid input, cancellation) leaves the mesh untouched.
 #pragma once
 
+#include "flat_base.h"
 #include "hole_fairing.h"
 #include "hole_loops.h"
 #include "hole_refinement.h"
@@ -38,8 +39,8 @@ struct CoarseFillParams {
   double density_alpha = 1.41421356; ///< Liepa's alpha: larger gives a denser fill
   bool fair = true;                  ///< bi-Laplacian fairing of the inserted vertices
   /// A planar loop whose surroundings meet its plane at a crease (the cut bottom of a statue,
-  /// a window) is closed by a flat membrane instead of a thin plate, which would bulge to
-  /// continue the walls around it.
+  /// a window), or a cut base (IsFlatBase), is closed by a flat membrane instead of a thin
+  /// plate, which would bulge to continue the walls around it.
   bool flat_planar_caps = true;
   bool select_new_faces = true; ///< replace the face selection with the new faces
   int threads = 0;              ///< holes filled at once; 0: one per core
@@ -62,7 +63,7 @@ struct CoarseHoleReport {
   bool filled = false;
   std::string triangulation; ///< "liepa-dp" or "vcg-ears"
   bool faired = false;
-  bool planar_cap = false; ///< closed flat (IsPlanarCap) rather than as a thin plate
+  bool planar_cap = false; ///< closed flat (IsPlanarCap, IsFlatBase) rather than as a thin plate
   std::string problem;     ///< why the hole stayed open or was not faired; empty if none
   double seconds = 0;
   std::vector<int> loop;         ///< the loop's vertex indices in the mesh
@@ -166,27 +167,20 @@ constexpr int kIteratedFairingMaxVertices = 20000;
 /// fandisk's gently curved faces the sides tilt about 0.9 degrees, a flat face's 0.01.
 inline bool IsPlanarCap(const std::vector<Eigen::Vector3d>& points,
                         const std::vector<Eigen::Vector3d>& side_normals) {
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  for (const auto& p : points) centre += p;
-  centre /= double(points.size());
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  Eigen::AlignedBox3d box;
-  for (const auto& p : points) cov += (p - centre) * (p - centre).transpose(), box.extend(p);
-  const Eigen::Vector3d normal =
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvectors().col(0);
-  double off_plane = 0, alignment = 0;
-  for (const auto& p : points) off_plane = std::max(off_plane, std::abs((p - centre).dot(normal)));
-  for (const auto& n : side_normals) alignment += std::abs(n.dot(normal));
+  const LoopPlane plane = FitLoopPlane(points);
+  double alignment = 0;
+  for (const auto& n : side_normals) alignment += std::abs(n.dot(plane.normal));
   alignment /= double(side_normals.size());
   const bool crease = alignment < std::cos(35 * M_PI / 180);
   const bool coplanar = alignment > std::cos(0.25 * M_PI / 180);
-  return off_plane <= 0.005 * box.diagonal().norm() && (crease || coplanar);
+  return plane.off_plane <= 0.005 * plane.size && (crease || coplanar);
 }
 
-/// Builds one hole's patch: triangulation, refinement, fairing.
+/// Builds one hole's patch: triangulation, refinement, fairing; `cut_base`: the hole is a cut
+/// base (IsFlatBase), capped flat.
 inline HolePatch FillOneHole(const std::vector<Eigen::Vector3d>& loop_points,
-                             const HoleCollar& collar, const CoarseFillParams& params,
-                             CoarseHoleReport& report) {
+                             const HoleCollar& collar, bool cut_base,
+                             const CoarseFillParams& params, CoarseHoleReport& report) {
   const int n = int(loop_points.size());
   HolePatch patch;
   patch.boundary_count = n;
@@ -207,8 +201,8 @@ inline HolePatch FillOneHole(const std::vector<Eigen::Vector3d>& loop_points,
 
   // A planar cap ends up flat whatever its initial triangulation (the benchmark's falcon
   // bottom: the same distances either way), so it takes the fast ears.
-  report.planar_cap =
-      params.fair && params.flat_planar_caps && IsPlanarCap(loop_points, collar.side_normals);
+  report.planar_cap = params.fair && params.flat_planar_caps &&
+                      (cut_base || IsPlanarCap(loop_points, collar.side_normals));
   HoleTriangulationParams tp;
   tp.dp_max_edges = report.planar_cap ? 0 : params.dp_max_edges;
   HoleTriangulation tri =
@@ -364,7 +358,11 @@ CoarseFillResult CoarseFill(MeshType& m, const CoarseFillParams& params = {},
     std::vector<Eigen::Vector3d> points(loop.EdgeCount());
     for (int i = 0; i < loop.EdgeCount(); ++i)
       points[i] = result.box.ToUnit(m.vert[loop.vertices[i]].cP());
-    patches[h] = detail::FillOneHole(points, collars[h], params, report);
+    // Whether it is a cut base shows in the surface beyond the collar, so it is read from the
+    // mesh (read only until every hole is done).
+    const bool cut_base = params.fair && params.flat_planar_caps &&
+                          IsFlatBase(m, points, collars[h].side_normals, result.box);
+    patches[h] = detail::FillOneHole(points, collars[h], cut_base, params, report);
     report.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
