@@ -38,9 +38,9 @@ bool ValidatesOnFakeHoles(const HoleFillParams& params);
 /// continuation at each detail amplitude, fills each fake hole and is scored against the
 /// surface cut out. Returns the candidates, their errors and the choice: the best validated
 /// where it is clearly better than the smooth fill (ClearlyBetter), else the smooth fill
-/// (`not_clear` then names the best); `no_evidence`, with a note and no candidates, where no fake
-/// hole could be filled. \pre ctx.mesh, ctx.coarse and ctx.vf are given;
-/// ValidatesOnFakeHoles(params).
+/// (`not_clear` then names the best); `no_evidence`, with a note and no candidates, where no
+/// fake hole could be filled.
+/// \pre ctx.mesh, ctx.coarse and ctx.vf are given; ValidatesOnFakeHoles(params).
 ValidationRecord ValidateHole(const HoleImage& hi, const HoleFillParams& params,
                               const InpaintParams& inpaint, const ValidationContext& ctx,
                               const PatchWork& hole);
@@ -53,8 +53,8 @@ double ScoreVariation(const QImage& variation, const QImage& mask);
 /// Whether the fake holes show candidate `c` clearly closer than the smooth fill `smooth`
 /// (`per_fake_hole`: each candidate's error on each fake hole): closer on the fake holes that
 /// hold at least vp.min_win_share of the smooth fill's error. A candidate that wins only where
-/// the smooth fill is already close, and loses where it is far off, keeps the smooth fill: the
-/// real hole is the hard case. Fake holes that both fill exactly (a flat face) do not count.
+/// every fill comes close, and loses where the smooth fill is far off, is not trusted with the
+/// hole. Fake holes that both fill exactly (a flat face) do not count.
 /// \pre every row of per_fake_hole has entries c and smooth.
 bool ClearlyBetter(const std::vector<std::vector<double>>& per_fake_hole, size_t c, size_t smooth,
                    const ValidationParams& vp);
