@@ -159,15 +159,13 @@ constexpr int kDpFallbackMaxEdges = 600;
 /// Fills with more inserted vertices are faired by one solve only.
 constexpr int kIteratedFairingMaxVertices = 20000;
 
-/// Whether a loop is planar (within 0.5 % of its size) and the faces beside it either lie in
-/// its plane (within 0.25 degrees on average) or leave it at a crease (more than 35 degrees):
-/// then the missing surface is a flat cap, which a membrane reproduces exactly and a thin plate
-/// would bulge to continue the walls. In between, the surroundings curve smoothly into the
-/// hole (a small hole on a sphere has a planar loop too) and the thin plate is right: on the
-/// fandisk's gently curved faces the sides tilt about 0.9 degrees, a flat face's 0.01.
-inline bool IsPlanarCap(const std::vector<Eigen::Vector3d>& points,
-                        const std::vector<Eigen::Vector3d>& side_normals) {
-  const LoopPlane plane = FitLoopPlane(points);
+/// Whether a loop (`plane`: its FitLoopPlane) is planar (within 0.5 % of its size) and the faces
+/// beside it either lie in its plane (within 0.25 degrees on average) or leave it at a crease (more
+/// than 35 degrees): then the missing surface is a flat cap, which a membrane reproduces exactly
+/// and a thin plate would bulge to continue the walls. In between, the surroundings curve smoothly
+/// into the hole (a small hole on a sphere has a planar loop too) and the thin plate is right: on
+/// the fandisk's gently curved faces the sides tilt about 0.9 degrees, a flat face's 0.01.
+inline bool IsPlanarCap(const LoopPlane& plane, const std::vector<Eigen::Vector3d>& side_normals) {
   double alignment = 0;
   for (const auto& n : side_normals) alignment += std::abs(n.dot(plane.normal));
   alignment /= double(side_normals.size());
@@ -176,10 +174,10 @@ inline bool IsPlanarCap(const std::vector<Eigen::Vector3d>& points,
   return plane.off_plane <= 0.005 * plane.size && (crease || coplanar);
 }
 
-/// Builds one hole's patch: triangulation, refinement, fairing; `cut_base`: the hole is a cut
-/// base (IsFlatBase), capped flat.
+/// Builds one hole's patch: triangulation, refinement, fairing; `flat_cap`: closed by a flat
+/// membrane (IsPlanarCap, IsFlatBase).
 inline HolePatch FillOneHole(const std::vector<Eigen::Vector3d>& loop_points,
-                             const HoleCollar& collar, bool cut_base,
+                             const HoleCollar& collar, bool flat_cap,
                              const CoarseFillParams& params, CoarseHoleReport& report) {
   const int n = int(loop_points.size());
   HolePatch patch;
@@ -201,8 +199,7 @@ inline HolePatch FillOneHole(const std::vector<Eigen::Vector3d>& loop_points,
 
   // A planar cap ends up flat whatever its initial triangulation (the benchmark's falcon
   // bottom: the same distances either way), so it takes the fast ears.
-  report.planar_cap = params.fair && params.flat_planar_caps &&
-                      (cut_base || IsPlanarCap(loop_points, collar.side_normals));
+  report.planar_cap = flat_cap;
   HoleTriangulationParams tp;
   tp.dp_max_edges = report.planar_cap ? 0 : params.dp_max_edges;
   HoleTriangulation tri =
@@ -358,11 +355,14 @@ CoarseFillResult CoarseFill(MeshType& m, const CoarseFillParams& params = {},
     std::vector<Eigen::Vector3d> points(loop.EdgeCount());
     for (int i = 0; i < loop.EdgeCount(); ++i)
       points[i] = result.box.ToUnit(m.vert[loop.vertices[i]].cP());
-    // Whether it is a cut base shows in the surface beyond the collar, so it is read from the
-    // mesh (read only until every hole is done).
-    const bool cut_base = params.fair && params.flat_planar_caps &&
-                          IsFlatBase(m, points, collars[h].side_normals, result.box);
-    patches[h] = detail::FillOneHole(points, collars[h], cut_base, params, report);
+    // A cut base shows in the surface beyond the collar, so it is read from the mesh (read
+    // only until every hole is done), and only where the loop alone does not decide.
+    const LoopPlane plane = FitLoopPlane(points);
+    const auto& sides = collars[h].side_normals;
+    const bool flat_cap =
+        params.fair && params.flat_planar_caps &&
+        (detail::IsPlanarCap(plane, sides) || IsFlatBase(m, plane, points, sides, result.box));
+    patches[h] = detail::FillOneHole(points, collars[h], flat_cap, params, report);
     report.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };

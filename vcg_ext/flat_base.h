@@ -54,16 +54,16 @@ struct FlatBaseParams {
   double max_turn = 0.5;
 };
 
-/// Whether the hole of `loop_points` (unit box `box`, with `side_normals` the unit normals of
-/// the faces beside its edges) is a cut base of mesh `m` (FlatBaseParams): nearly planar,
-/// its rim a crease, and the surface beyond it not turning on as a sphere's would. Reads every
-/// face of `m` near the loop where the loop passes the first two tests.
+/// Whether the hole of `loop_points` (unit box `box`; `plane` its FitLoopPlane, `side_normals`
+/// the unit normals of the faces beside its edges) is a cut base of mesh `m` (FlatBaseParams):
+/// nearly planar, its rim a crease, and the surface beyond it not turning on as a sphere's
+/// would. Reads every face of `m` near the loop where the loop passes the first two tests.
 /// \pre loop_points is not empty.
 template <class MeshType>
-bool IsFlatBase(const MeshType& m, const std::vector<Eigen::Vector3d>& loop_points,
+bool IsFlatBase(const MeshType& m, const LoopPlane& plane,
+                const std::vector<Eigen::Vector3d>& loop_points,
                 const std::vector<Eigen::Vector3d>& side_normals, const UnitBox& box,
                 const FlatBaseParams& params = {}) {
-  const LoopPlane plane = FitLoopPlane(loop_points);
   if (!(plane.off_plane <= params.max_off_plane * plane.size)) return false;
   auto angle = [&](const Eigen::Vector3d& n) {
     return std::acos(std::min(1.0, std::abs(n.dot(plane.normal))));

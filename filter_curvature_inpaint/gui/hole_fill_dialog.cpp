@@ -83,8 +83,7 @@ QString Key(const QString& backend, const char* field) {
 
 /// The backend the list shows (its items are InpaintBackends(), in order).
 Backend SelectedBackend(const QComboBox& list) {
-  const std::vector<Backend>& backends = InpaintBackends();
-  return backends[size_t(std::max(0, std::min(int(backends.size()) - 1, list.currentIndex())))];
+  return BackendAt(list.currentIndex());
 }
 
 /// Where a list item keeps the variations it stands for (0-based, first and last).

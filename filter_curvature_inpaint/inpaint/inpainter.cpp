@@ -13,6 +13,7 @@
 #include <QRegularExpression>
 #include <QUrl>
 
+#include <algorithm>
 #include <chrono>
 
 #include <cstdlib>
@@ -394,6 +395,11 @@ const std::vector<Backend>& InpaintBackends() {
                                              Backend::kSdWebUi, Backend::kStability,
                                              Backend::kComfyUi};
   return backends;
+}
+
+Backend BackendAt(int index) {
+  const std::vector<Backend>& backends = InpaintBackends();
+  return backends[size_t(std::max(0, std::min(int(backends.size()) - 1, index)))];
 }
 
 std::string BackendName(Backend backend) {

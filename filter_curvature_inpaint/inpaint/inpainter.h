@@ -59,6 +59,10 @@ void CheckInpaintParams(const InpaintParams& params);
 /// The backends this build knows, in the order the filter's list and the dialog show them.
 const std::vector<Backend>& InpaintBackends();
 
+/// The backend at `index` of InpaintBackends(), the nearest end where it is out of range (a
+/// list's position: the filter's enum, the dialog's list).
+Backend BackendAt(int index);
+
 /// The backend's name on the command line, in scripts, settings and reports ("embedded",
 /// "openai", "sd-webui", "stability", "comfyui").
 std::string BackendName(Backend backend);

@@ -108,10 +108,8 @@ void RunCurvatureImages(MeshModel& mm, const ParamValues& v, const FilterEnviron
 }
 
 void RunHoleFillFromParams(MeshModel& mm, const ParamValues& v, const FilterEnvironment& env) {
-  const std::vector<Backend>& backends = InpaintBackends();
   HoleFillParams p;
-  p.inpaint.backend =
-      backends.at(size_t(std::max(0, std::min(int(backends.size()) - 1, v.Enum("Backend")))));
+  p.inpaint.backend = BackendAt(v.Enum("Backend"));
   p.inpaint.url = Trimmed(v, "ServerUrl");
   p.inpaint.model = Trimmed(v, "Model");
   p.inpaint.prompt = v.String("Prompt");
