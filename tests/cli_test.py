@@ -449,6 +449,25 @@ class DetailAndValidation(TempDirTest):
         r = run([TOOL, "preview", self.SAMPLE, pictures, "--report", self.path("r.json")])
         self.assertEqual(r.returncode, 2)
 
+    def test_a_fill_makes_only_the_variations_its_pick_can_take(self):
+        # Asked for pictures, a fill makes and shows every variation; without, only those its
+        # automatic pick can take, the others listed unmade (no score): the same mesh, bytes
+        # and all, the same choices, and the same numbers for the variations.
+        lazy, holes, log = self.fill()
+        every, holes_every, _ = self.fill("--images", self.path("pictures"))
+        self.assertEqual(lazy, every)
+        unmade = 0
+        for h, e in zip(holes, holes_every):
+            self.assertEqual((h["kinds"], h["pick"], h["validation"]),
+                             (e["kinds"], e["pick"], e["validation"]))
+            self.assertNotIn(None, e["scores"])
+            for s, t in zip(h["scores"], e["scores"]):
+                unmade += s is None
+                self.assertIn(s, (None, t))
+            if h["pick"] > 0:
+                self.assertIsNotNone(h["scores"][h["pick"] - 1])
+        self.assertGreater(unmade, 0)
+
     def test_no_fake_holes_is_the_variation_score(self):
         _, holes, log = self.fill("--fake-holes", "0")
         for h in holes:

@@ -15,6 +15,10 @@ public:
     return params.validation.details;
   }
   bool Seeded() const override { return true; }
+  /// The embedded inpainter's, as many as asked for; a service's, as many as it sends.
+  int VariationCount(const PatchSite& site) const override {
+    return site.inpaint->backend == Backend::kEmbedded ? site.inpaint->variations : -1;
+  }
   std::vector<CandidateVariation> Variations(const PatchSite& site,
                                              const PatchWork&) const override;
   FakeHoleFill FillFakeHole(const PatchSite& site, const PatchWork& work,

@@ -13,6 +13,8 @@ public:
     return params.exemplar && params.inpaint.backend == Backend::kEmbedded;
   }
   bool Seeded() const override { return true; }
+  /// Fewer than asked for where the known region has no patch to copy.
+  int VariationCount(const PatchSite&) const override { return -1; }
   std::vector<CandidateVariation> Variations(const PatchSite& site,
                                              const PatchWork&) const override;
   FakeHoleFill FillFakeHole(const PatchSite& site, const PatchWork&, size_t) const override;

@@ -102,6 +102,10 @@ public:
   /// The amplitudes it is validated at, one candidate each (the continuation's detail
   /// amplitudes); empty: once.
   virtual std::vector<double> ValidatedAmplitudes(const HoleFillParams&) const { return {}; }
+  /// How many variations Variations() makes of a hole, known without making them; -1 where only
+  /// making them tells. A fill that lists the variations its pick cannot take, without making
+  /// them, needs it.
+  virtual int VariationCount(const PatchSite&) const { return 1; }
   /// Its variations of a hole (images from `inpaint`, at the hole's amplitude and spacing).
   /// \pre Applies(work).
   virtual std::vector<CandidateVariation> Variations(const PatchSite& site,

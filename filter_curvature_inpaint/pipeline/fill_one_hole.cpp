@@ -88,7 +88,11 @@ PriorNotes NotesOf(const PatchWork& work) {
 /// Stage 8 with the embedded backend or a service: the candidates' shared work (the priors'
 /// fills), the fake-hole validation where it runs (it may choose the amplitude), then each
 /// candidate's variations: the continuations, the exemplars if asked for, the priors' fills.
-void InpaintFromBackend(const HoleImage& hi, const HoleContext& ctx, HoleVariations& hv) {
+/// With `every_variation` false (a fill that picks automatically and shows nothing) only the
+/// variations the automatic pick can take are made; the others are listed, with their numbers
+/// as a preview gives them, and not made.
+void InpaintFromBackend(const HoleImage& hi, const HoleContext& ctx, bool every_variation,
+                        HoleVariations& hv) {
   const HoleFillParams& params = *ctx.params;
   hv.detail_scale = FillSpacingPixels(hi);
   hv.detail = ctx.inpaint->detail;
@@ -113,10 +117,17 @@ void InpaintFromBackend(const HoleImage& hi, const HoleContext& ctx, HoleVariati
   }
   const InpaintParams at_scale = AtHoleScale(*ctx.inpaint, hv);
   site.inpaint = &at_scale;
-  for (const FillCandidate* c : enabled)
-    if (c->IsVariation() && c->Applies(work))
-      for (CandidateVariation& v : c->Variations(site, work))
-        AddVariation(hv, std::move(v.image), FillKindName(c->KindAt(work)), std::move(v.surface));
+  for (const FillCandidate* c : enabled) {
+    if (!c->IsVariation() || !c->Applies(work)) continue;
+    const std::string kind = FillKindName(c->KindAt(work));
+    const int listed = c->VariationCount(site);
+    if (!every_variation && listed >= 0 && !AutomaticPickCanTake(hv.choice, kind)) {
+      for (int j = 0; j < listed; ++j) AddVariation(hv, QImage(), kind);
+      continue;
+    }
+    for (CandidateVariation& v : c->Variations(site, work))
+      AddVariation(hv, std::move(v.image), kind, std::move(v.surface));
+  }
 }
 
 /// Stage 8 from the image a person inpainted by hand in params.inpainted_dir; false (with the
@@ -245,7 +256,7 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleContext& ctx
   } else if (!params.inpainted_dir.empty()) {
     if (!InpaintFromFolder(hi, k, params, hv)) return hv;
   } else {
-    InpaintFromBackend(hi, ctx, hv);
+    InpaintFromBackend(hi, ctx, ctx.every_variation || !automatic, hv);
   }
   hv.seconds.inpaint = Since(t) - hv.seconds.validation;
   hv.choice.priors.has_creases = vcg_ext::CreaseLinesIntoHole(hi.patch) >= 2;

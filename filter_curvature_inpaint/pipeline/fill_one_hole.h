@@ -18,6 +18,9 @@ struct HoleContext {
   ValidationContext validation;           ///< validation.coarse is always given
   /// The variations of a preview to apply instead of asking the backend; null: ask it.
   const std::vector<HoleVariations>* chosen = nullptr;
+  /// Make every variation of a hole (a preview, a fill that writes pictures). False: where the
+  /// pick is automatic, only those it can take; the others are listed with a null image.
+  bool every_variation = true;
 };
 
 /// One hole's fill: the record of what it became and why, its variations (for the pictures),

@@ -301,6 +301,8 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
     ctx.params = &params;
     ctx.inpaint = &inpaint;
     ctx.chosen = chosen;
+    // What a hole's automatic pick cannot take is not made where no picture shows it.
+    ctx.every_variation = !params.images_dir.empty();
     ctx.validation.coarse = &coarse;
     if (validates || symmetric) {
       std::call_once(context_once, [&] {

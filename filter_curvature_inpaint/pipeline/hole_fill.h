@@ -143,7 +143,8 @@ struct HoleFillReport {
 struct HoleVariations {
   QImage image, mask; ///< the coarse curvature image and its hole (white)
   /// The backend's completions of `image` ("continuation"), then the priors' variations; their
-  /// kinds, scores and the pick are in `choice`.
+  /// kinds, scores and the pick are in `choice`. A null image: listed, not made (a fill makes
+  /// only what its automatic pick can take).
   std::vector<QImage> variations;
   /// Per variation: empty where the patch is deformed to the image's curvature, else the
   /// patch (unit box) the hole takes as it is ("symmetry surface").

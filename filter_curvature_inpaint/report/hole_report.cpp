@@ -70,8 +70,9 @@ std::vector<std::string> DescribeHoleFill(const HoleFillResult& result) {
       std::snprintf(buf, sizeof buf, "inpaint %zu: none: %s", k + 1, c.problem.c_str());
     } else {
       std::string scores;
-      for (double s : c.scores)
-        scores += (scores.empty() ? "" : " ") + QString::number(s, 'g', 4).toStdString();
+      for (double s : c.scores) // "-": a variation listed, not made
+        scores += (scores.empty() ? "" : " ") +
+                  (std::isfinite(s) ? QString::number(s, 'g', 4).toStdString() : "-");
       const std::string kind = r.kind == "continuation" ? "" : " " + r.kind;
       std::snprintf(
           buf, sizeof buf,

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace curvature_inpaint {
 
@@ -87,10 +88,25 @@ int AutomaticPick(const HoleChoice& choice) {
   return best > 0 || choice.kinds.empty() ? best : 1;
 }
 
+bool AutomaticPickCanTake(const HoleChoice& choice, const std::string& kind) {
+  if (CoarseValidatedBest(choice) || choice.validation.no_evidence) return false;
+  const ValidationRecord& v = choice.validation;
+  if (v.chosen >= 0 && size_t(v.chosen) < v.candidates.size()) {
+    const std::vector<std::string> kinds = VariationKindNames();
+    if (std::find(kinds.begin(), kinds.end(), v.candidates[size_t(v.chosen)]) != kinds.end())
+      return kind == v.candidates[size_t(v.chosen)];
+  }
+  // An amplitude of the embedded inpainter ("detail 0.5") validated best, or nothing was
+  // validated: the best-scored continuation.
+  return kind == FillKindName(FillKind::kContinuation);
+}
+
 void PickVariation(HoleVariations& hole, int pick, const std::string& pick_kind) {
   HoleChoice& c = hole.choice;
   c.scores.clear();
-  for (const QImage& v : hole.variations) c.scores.push_back(ScoreVariation(v, hole.mask));
+  for (const QImage& v : hole.variations)
+    c.scores.push_back(v.isNull() ? std::numeric_limits<double>::quiet_NaN()
+                                  : ScoreVariation(v, hole.mask));
   c.pick = pick > 0 ? std::min(pick, int(hole.variations.size())) : AutomaticPick(c);
   if (!pick_kind.empty()) {
     c.pick_note = "it has no " + pick_kind + " variation";
