@@ -239,6 +239,57 @@ TEST(Cancel, HolesOnSeveralServersStopTogetherAndTheCallbackRunsOnTheCallersThre
   for (size_t i = 0; i < before.size(); ++i) ASSERT_EQ(m.vert[i].cP(), before[i]) << i;
 }
 
+/// MeshLab's callback: asks to stop the first time it is asked while the only hole is being
+/// filled (no hole done yet: only the hole's own path asks then), and counts those calls.
+std::atomic<int> g_within_the_hole{0};
+bool StopWithinTheHole(int, const char* what) {
+  if (std::this_thread::get_id() != g_caller) ++g_callbacks_elsewhere;
+  const std::string message = what;
+  if (message != "Curvature Inpaint: hole 0 of 1" &&
+      message != "Curvature Inpaint: inpainted hole 0 of 1")
+    return true;
+  ++g_within_the_hole;
+  return false;
+}
+
+// A big hole's validation takes seconds: a stop asked while it runs is heard between two
+// candidates' fills, not once the hole is done, on every thread its fake holes run on, and
+// the mesh is left as it was.
+TEST(Cancel, AStopAskedWhileAHoleIsValidatedIsHeardBeforeTheHoleIsDone) {
+  CMeshO m;
+  MakeBumpySphere(m);
+  PunchThreeBumps(m);
+  std::vector<Point3m> before;
+  for (const auto& v : m.vert) before.push_back(v.cP());
+  const size_t faces = m.face.size();
+  g_caller = std::this_thread::get_id();
+  for (bool preview : {false, true}) {
+    g_within_the_hole = 0;
+    g_callbacks_elsewhere = 0;
+    CMeshO scratch;
+    curvature_inpaint::CopyMesh(m, scratch);
+    HoleFillParams p = SmallImages();
+    p.images.coarse.threads = 2; // the fake holes on two threads
+    bool stopped = false;
+    try {
+      if (preview)
+        curvature_inpaint::InpaintHoles(scratch, p, StopWithinTheHole);
+      else
+        FillHoles(m, p, StopWithinTheHole);
+    } catch (const vcg_ext::CancelledError&) {
+      stopped = true;
+    }
+    EXPECT_TRUE(stopped) << preview;
+    // Asked once: the stop it answered reached the fake holes on the other thread without
+    // asking again.
+    EXPECT_EQ(g_within_the_hole, 1) << preview;
+    EXPECT_EQ(g_callbacks_elsewhere, 0) << preview;
+  }
+  ASSERT_EQ(m.vert.size(), before.size());
+  ASSERT_EQ(m.face.size(), faces);
+  for (size_t i = 0; i < before.size(); ++i) ASSERT_EQ(m.vert[i].cP(), before[i]) << i;
+}
+
 // A hole in one of a cube's faces, two grid cells from its edge: the coarse fill's flat cap is
 // the face itself; the continuation and the tri-Laplacian read the curvature of the edge
 // nearby and bent it off the face.

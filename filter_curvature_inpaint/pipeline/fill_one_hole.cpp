@@ -119,6 +119,7 @@ void InpaintFromBackend(const HoleImage& hi, const HoleContext& ctx, bool every_
   site.inpaint = &at_scale;
   for (const FillCandidate* c : enabled) {
     if (!c->IsVariation() || !c->Applies(work)) continue;
+    StopIfAsked(ctx.validation);
     const std::string kind = FillKindName(c->KindAt(work));
     const int listed = c->VariationCount(site);
     if (!every_variation && listed >= 0 && !AutomaticPickCanTake(hv.choice, kind)) {

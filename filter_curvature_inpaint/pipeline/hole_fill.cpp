@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -76,6 +77,25 @@ InpaintParams WithCancel(const HoleFillParams& params, vcg::CallBackPos* cb, con
       return cancel->requested.load();
     };
   return inpaint;
+}
+
+/// The hook a hole's path asks between two candidates' fills whether to stop: on the calling
+/// thread the callback, with the progress the run last showed ("Curvature Inpaint: <what>hole
+/// <done> of <count>", so the bar stays put and the GUI stays live while a big hole is
+/// validated), on the others what it last answered. Null without a callback.
+std::function<bool()> StopHook(vcg::CallBackPos* cb, const char* what, const std::atomic<int>* done,
+                               const std::atomic<int>* count,
+                               const std::shared_ptr<CancelRequest>& cancel) {
+  if (!cb) return nullptr;
+  return [=] {
+    if (std::this_thread::get_id() == cancel->asker) {
+      const int d = done->load(), n = std::max(1, count->load());
+      const std::string msg = std::string("Curvature Inpaint: ") + what + "hole " +
+                              std::to_string(d) + " of " + std::to_string(n);
+      if (!cb(int(100.0 * d / n), msg.c_str())) cancel->requested = true;
+    }
+    return cancel->requested.load();
+  };
 }
 
 /// The report over holes, given the holes done (ParallelFor's after each of the calling thread's
@@ -204,19 +224,27 @@ std::vector<HoleVariations> InpaintHoles(CMeshO& scratch, const HoleFillParams& 
   HoleContext ctx;
   ctx.params = &params;
   ctx.inpaint = &inpaint;
-  ctx.validation = ValidationContext{&scratch, &images.coarse, &vf, symmetry.get(),
-                                     FakeHoleThreads(images.coarse, threads)};
   const int count = int(images.holes.size());
+  std::atomic<int> inpainted{0}, holes{count};
+  ctx.validation = ValidationContext{&scratch,
+                                     &images.coarse,
+                                     &vf,
+                                     symmetry.get(),
+                                     FakeHoleThreads(images.coarse, threads),
+                                     StopHook(cb, "inpainted ", &inpainted, &holes, cancel)};
   if (cb && !cb(0, ("Curvature Inpaint: inpainting " + std::to_string(count) + " holes").c_str()))
     throw vcg_ext::CancelledError();
-  std::vector<HoleVariations> holes(static_cast<size_t>(count));
+  std::vector<HoleVariations> variations(static_cast<size_t>(count));
   const int at_once = InpaintsLocally(params) ? threads : RequestsAtOnce(pool.get());
   const auto report = HolesDone(cb, &progress, count, "inpainted", cancel);
   vcg_ext::ParallelFor(
       count, at_once,
-      [&](int k) { holes[size_t(k)] = InpaintHole(images.holes[size_t(k)], size_t(k), ctx); },
+      [&](int k) {
+        variations[size_t(k)] = InpaintHole(images.holes[size_t(k)], size_t(k), ctx);
+        ++inpainted;
+      },
       report);
-  return holes;
+  return variations;
 }
 
 const char* DeformationModeName(DeformationMode mode) {
@@ -288,7 +316,13 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
   std::unique_ptr<vcg_ext::VertexFaces> vf;
   std::unique_ptr<SymmetryPrior> symmetry;
   int fake_hole_threads = 1;
+  // Where the holes are filled as their images are built, the callback is asked after each
+  // hole this thread fills and, within a hole, between two candidates' fills.
+  std::atomic<int> holes_finished{0}, holes_to_fill{1};
+  const std::function<bool()> stop_asked =
+      StopHook(local ? cb : nullptr, "", &holes_finished, &holes_to_fill, cancel);
   auto fill_hole = [&](const vcg_ext::CoarseFillResult& coarse, int k, HoleImage& hi) {
+    holes_to_fill = coarse.FilledCount();
     HoleDone* slot;
     {
       std::lock_guard<std::mutex> lock(done_mutex);
@@ -312,7 +346,9 @@ HoleFillResult FillHoles(CMeshO& m, const HoleFillParams& params, vcg::CallBackP
       });
       ctx.validation = ValidationContext{&m, &coarse, vf.get(), symmetry.get(), fake_hole_threads};
     }
+    ctx.validation.stop_asked = stop_asked;
     *slot = Finish(FillOneHole(hi, size_t(k), ctx), size_t(k), params.images_dir);
+    ++holes_finished;
     std::vector<uint8_t>().swap(hi.image.rgb);
     std::vector<uint8_t>().swap(hi.image.hole);
   };

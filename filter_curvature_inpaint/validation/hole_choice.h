@@ -15,6 +15,7 @@
 #include <vcg_ext/coarse_fill.h>
 #include <vcg_ext/hole_segmentation.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,13 @@ struct ValidationContext {
   const vcg_ext::VertexFaces* vf = nullptr;          ///< null where no hole is validated
   const SymmetryPrior* symmetry = nullptr;           ///< null where the prior is off
   int threads = 1; ///< for one hole's fake holes: what the holes in parallel leave over
+  /// Asked between two candidates' fills, on any thread: true where the user asked to stop
+  /// (the hole's path then throws vcg_ext::CancelledError). Null: never.
+  std::function<bool()> stop_asked;
 };
+
+/// Throws vcg_ext::CancelledError where ctx.stop_asked says the user asked to stop.
+void StopIfAsked(const ValidationContext& ctx);
 
 /// Whether FillHoles and InpaintHoles validate each hole on fake holes with these parameters
 /// (the embedded backend, fake holes asked for, no oracle and no hand-inpainted folder).

@@ -75,6 +75,7 @@ bool TryFakeHole(const FakeHole& fake, const std::vector<ValidationCandidate>& c
                  const ValidationContext& ctx, FakeHoleTrial& t) {
   const ValidationParams& vp = params.validation;
   t.fake = &fake;
+  StopIfAsked(ctx);
   CMeshO local;
   CopyMesh(fake.holed, local);
   CurvatureImagesParams ip = params.images;
@@ -117,9 +118,12 @@ bool TryFakeHole(const FakeHole& fake, const std::vector<ValidationCandidate>& c
   site.excluded_radius = 1.25 * fake.radius / t.images.coarse.box.scale;
   std::vector<const FillCandidate*> used;
   for (const ValidationCandidate& c : candidates) used.push_back(c.fill);
+  StopIfAsked(ctx);
   PatchWork work = MakePatchWork(site, used);
+  StopIfAsked(ctx);
   work.completions = InpaintEmbeddedAmplitudes(site.image, site.mask, one, vp.details);
   for (const ValidationCandidate& c : candidates) {
+    StopIfAsked(ctx);
     FakeHoleFill filled = c.fill->FillFakeHole(site, work, c.amplitude);
     t.applies.push_back(filled.applies);
     t.fills.push_back(filled.applies ? std::move(filled.points) : f.patch.points);
@@ -223,6 +227,10 @@ bool FlatterThanFakeHoles(const HoleImage& hi, const std::vector<FakeHoleTrial>&
 }
 
 } // namespace
+
+void StopIfAsked(const ValidationContext& ctx) {
+  if (ctx.stop_asked && ctx.stop_asked()) throw vcg_ext::CancelledError();
+}
 
 bool ValidatesOnFakeHoles(const HoleFillParams& p) {
   return p.validation.fake_holes > 0 && p.inpaint.backend == Backend::kEmbedded && !p.oracle &&
