@@ -69,6 +69,11 @@ def sh(args, **kw):
     return r
 
 
+def hole_edges(info):
+    """The boundary edges of each hole, from `curvature-inpaint info`'s `hole_edges` line."""
+    return [int(e) for e in re.search(r"^hole_edges(.*)$", info, re.M).group(1).split()]
+
+
 def build():
     sh(["bash", os.path.join(ROOT, "scripts", "setup-debian.sh")])
     if subprocess.run(["dpkg-query", "-W", "libcgal-dev"], capture_output=True).returncode != 0:
@@ -181,7 +186,7 @@ def main():
         quality, speed, triang = [], [], []
         for name, gt, seed, frac, given in cases():
             inp = case_input(tmp, name, gt, seed, frac, given)
-            edges = sh([os.path.join(BIN, "curvature-inpaint"), "info", inp]).stdout.split("hole_edges")[1].split()
+            edges = [str(e) for e in hole_edges(sh([os.path.join(BIN, "curvature-inpaint"), "info", inp]).stdout)]
             o, c, m = (os.path.join(tmp, f"{name}_{k}.ply") for k in ("ours", "cgal", "meshlab"))
             o_fill, o_wall, o_method = ours(inp, o)
             c_fill, c_wall = cgal(inp, c)
@@ -211,7 +216,7 @@ def main():
         for label, inp in (("Igea with the nose hole", small), ("the same beside Igea subdivided twice", large)):
             info = sh([os.path.join(BIN, "curvature-inpaint"), "info", inp]).stdout
             faces = int(re.search(r"faces (\d+)", info).group(1))
-            edges = info.split("hole_edges")[1].split()
+            edges = [str(e) for e in hole_edges(info)]
             o_fill, o_wall, _ = ours(inp, os.path.join(tmp, "scale_ours.ply"))
             c_fill, c_wall = cgal(inp, os.path.join(tmp, "scale_cgal.ply"))
             m_wall = meshlab(server, script, inp, os.path.join(tmp, "scale_meshlab.ply"))

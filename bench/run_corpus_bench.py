@@ -35,7 +35,7 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from run_coarse_bench import (BIN, CLOSE_HOLES, ROOT, SHARED, build, check_args,  # noqa: E402
+from run_coarse_bench import (BIN, CLOSE_HOLES, ROOT, SHARED, build, check_args, hole_edges,  # noqa: E402
                               meshlab_prefix, sh)
 from run_holdout_bench import measure, ratio, run_gnuplot  # noqa: E402
 
@@ -79,7 +79,7 @@ def run_hole(hole, server, script, fill_args):
         inp, out = os.path.join(tmp, "in.ply"), os.path.join(tmp, "out.ply")
         sh([TOOL, "punch", gt, inp, "--seed-vertex", str(vertex), "--radius-frac", radius])
         row = {"name": f"{os.path.splitext(mesh)[0]}_{seed}", "radius": radius,
-               "edges": int(sh([TOOL, "info", inp]).stdout.split("hole_edges")[1].split()[0])}
+               "edges": hole_edges(sh([TOOL, "info", inp]).stdout)[0]}
         report = os.path.join(tmp, "report.json")
         s = timed([TOOL, "fill", inp, out, "--threads", "1", "--report", report, *fill_args])
         row["fill"] = measure(gt, inp, out, s)

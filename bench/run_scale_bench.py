@@ -17,8 +17,8 @@ import shutil
 import subprocess
 import tempfile
 
-from run_coarse_bench import (BIN, CLOSE_HOLES, SHARED, build, check_args, meshlab_prefix, sh,
-                              table)
+from run_coarse_bench import (BIN, CLOSE_HOLES, SHARED, build, check_args, hole_edges,
+                              meshlab_prefix, sh, table)
 
 
 def measured(args):
@@ -38,7 +38,7 @@ def hundreds(tmp, tool, tools, parts, out):
     sh([tools, "punch-many", closed, holed, "200", "2", "12"])
     info = sh([tool, "info", holed]).stdout
     faces = int(re.search(r"faces (\d+)", info).group(1))
-    edges = [int(e) for e in info.split("hole_edges")[1].split()]
+    edges = hole_edges(info)
     server = os.path.join(meshlab_prefix(os.path.join(tmp, "prefix")), "meshlabserver")
     script = os.path.join(tmp, "close_holes.mlx")
     with open(script, "w") as f:
@@ -55,7 +55,7 @@ def hundreds(tmp, tool, tools, parts, out):
             ("CGAL: triangulate_refine_and_fair_hole, every hole", [os.path.join(BIN, "cgal_fill"), holed, out]),
             ("MeshLab: Close Holes (meshlabserver)", ["xvfb-run", "-a", server, "-i", holed, "-o", out, "-s", script])):
         seconds, mb, err = measured(args)
-        left = len(sh([tool, "info", out]).stdout.split("hole_edges")[1].split())
+        left = len(hole_edges(sh([tool, "info", out]).stdout))
         rows.append(f"| {label} | {seconds:.1f} | {mb:.0f} | {left} |")
     table(f"{faces:,} faces, {len(edges)} holes of {min(edges)}-{max(edges)} boundary edges",
           ["process", "seconds", "peak memory (MB)", "holes left"], rows)
@@ -87,7 +87,7 @@ def main():
         sh([tools, "punch-many", parts[0], ten, "10", "4", "12"])
         info = sh([tool, "info", ten]).stdout
         faces = int(re.search(r"faces (\d+)", info).group(1))
-        edges = [int(e) for e in info.split("hole_edges")[1].split()]
+        edges = hole_edges(info)
         rows = []
         for label, args in (
                 ("ours: whole method (`fill`, 4 fake holes per hole)", [tool, "fill", ten, out]),

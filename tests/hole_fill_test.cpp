@@ -4,6 +4,7 @@
 #include "silent_server.h"
 
 #include <atomic>
+#include <set>
 #include <thread>
 
 namespace {
@@ -192,6 +193,25 @@ TEST(Report, NotesReadBackExactlyWhateverCharactersTheyHold) {
 std::thread::id g_caller;
 std::atomic<int> g_callbacks{0}, g_callbacks_elsewhere{0};
 
+/// Fills `m` (or previews a fill of a copy) with `cb` as MeshLab's callback: "stopped" where
+/// it came out as a stop, else what went wrong ("" where it ran to the end).
+std::string RunWithCallback(CMeshO& m, const HoleFillParams& p, bool preview,
+                            vcg::CallBackPos* cb) {
+  CMeshO scratch;
+  curvature_inpaint::CopyMesh(m, scratch);
+  try {
+    if (preview)
+      curvature_inpaint::InpaintHoles(scratch, p, cb);
+    else
+      FillHoles(m, p, cb);
+  } catch (const vcg_ext::CancelledError&) {
+    return "stopped";
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
 /// MeshLab's callback: counts where it runs, and asks to stop after a few calls.
 bool StopAfterAFewCalls(int, const char*) {
   if (std::this_thread::get_id() != g_caller) ++g_callbacks_elsewhere;
@@ -215,23 +235,9 @@ TEST(Cancel, HolesOnSeveralServersStopTogetherAndTheCallbackRunsOnTheCallersThre
   for (bool preview : {false, true}) {
     g_callbacks = 0;
     g_callbacks_elsewhere = 0;
-    CMeshO scratch;
-    curvature_inpaint::CopyMesh(m, scratch);
     // A stop is no failure of the servers: it comes out as the stop it is, and the pool does
     // not move on to the next server ("every one of the 2 servers failed").
-    std::string error;
-    bool stopped = false;
-    try {
-      if (preview)
-        curvature_inpaint::InpaintHoles(scratch, p, StopAfterAFewCalls);
-      else
-        FillHoles(m, p, StopAfterAFewCalls);
-    } catch (const vcg_ext::CancelledError&) {
-      stopped = true;
-    } catch (const std::exception& e) {
-      error = e.what();
-    }
-    EXPECT_TRUE(stopped) << preview << ": " << error;
+    EXPECT_EQ(RunWithCallback(m, p, preview, StopAfterAFewCalls), "stopped") << preview;
     EXPECT_GE(g_callbacks, 20) << preview;
     EXPECT_EQ(g_callbacks_elsewhere, 0) << preview;
   }
@@ -266,20 +272,9 @@ TEST(Cancel, AStopAskedWhileAHoleIsValidatedIsHeardBeforeTheHoleIsDone) {
   for (bool preview : {false, true}) {
     g_within_the_hole = 0;
     g_callbacks_elsewhere = 0;
-    CMeshO scratch;
-    curvature_inpaint::CopyMesh(m, scratch);
     HoleFillParams p = SmallImages();
     p.images.coarse.threads = 2; // the fake holes on two threads
-    bool stopped = false;
-    try {
-      if (preview)
-        curvature_inpaint::InpaintHoles(scratch, p, StopWithinTheHole);
-      else
-        FillHoles(m, p, StopWithinTheHole);
-    } catch (const vcg_ext::CancelledError&) {
-      stopped = true;
-    }
-    EXPECT_TRUE(stopped) << preview;
+    EXPECT_EQ(RunWithCallback(m, p, preview, StopWithinTheHole), "stopped") << preview;
     // Asked once: the stop it answered reached the fake holes on the other thread without
     // asking again.
     EXPECT_EQ(g_within_the_hole, 1) << preview;
@@ -288,6 +283,36 @@ TEST(Cancel, AStopAskedWhileAHoleIsValidatedIsHeardBeforeTheHoleIsDone) {
   ASSERT_EQ(m.vert.size(), before.size());
   ASSERT_EQ(m.face.size(), faces);
   for (size_t i = 0; i < before.size(); ++i) ASSERT_EQ(m.vert[i].cP(), before[i]) << i;
+}
+
+// Without detail the embedded inpainter's continuations are the one smooth continuation: a
+// preview (and a fill without fake holes, which scores them all) paints and scores it once and
+// shares it; with detail each is a picture of its own.
+TEST(Variations, ContinuationsWithoutDetailAreOnePicturePaintedOnce) {
+  CMeshO m;
+  MakeBumpySphere(m);
+  PunchThreeBumps(m);
+  for (double detail : {0.0, 1.0}) {
+    CMeshO scratch;
+    curvature_inpaint::CopyMesh(m, scratch);
+    HoleFillParams p = SmallImages();
+    p.validation.fake_holes = 0;
+    p.inpaint.variations = 4;
+    p.inpaint.detail = detail;
+    const auto holes = curvature_inpaint::InpaintHoles(scratch, p);
+    ASSERT_EQ(holes.size(), 1u);
+    const auto& v = holes[0].variations;
+    ASSERT_GE(v.size(), 4u);
+    std::set<qint64> pictures;
+    for (size_t j = 0; j < 4; ++j) {
+      EXPECT_EQ(holes[0].choice.kinds[j], "continuation");
+      pictures.insert(v[j].cacheKey());
+    }
+    EXPECT_EQ(pictures.size(), detail > 0 ? 4u : 1u) << detail;
+    if (detail == 0)
+      for (size_t j = 1; j < 4; ++j)
+        EXPECT_EQ(holes[0].choice.scores[j], holes[0].choice.scores[0]);
+  }
 }
 
 // A hole in one of a cube's faces, two grid cells from its edge: the coarse fill's flat cap is

@@ -309,6 +309,9 @@ std::vector<QImage> Complete(const QImage& image, const QImage& mask, const Inpa
 
   std::vector<QImage> out;
   const double largest = *std::max_element(amplitudes.begin(), amplitudes.end());
+  // Without detail every variation at every amplitude is the continuation alone: one picture,
+  // painted once and shared.
+  const bool plain = !(largest > 0 && amplitude > 0);
   for (int variation = 0; variation < variations; ++variation) {
     // A random field with the detail's correlation length, one per seed, scaled to the known
     // region's spread over the hole.
@@ -330,6 +333,10 @@ std::vector<QImage> Complete(const QImage& image, const QImage& mask, const Inpa
                                     std::max(0.0, std::min(1.0, 2 * inside[i] - 1));
     }
     for (double a : amplitudes) {
+      if (plain && !out.empty()) {
+        out.push_back(out.front());
+        continue;
+      }
       QImage result(f.w, f.h, QImage::Format_RGB32);
       for (int y = 0; y < f.h; ++y)
         for (int x = 0; x < f.w; ++x) {

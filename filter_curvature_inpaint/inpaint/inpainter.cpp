@@ -488,8 +488,14 @@ std::vector<QImage> Inpaint(const QImage& image, const QImage& mask, const Inpai
   // Back to the image's size, with the known pixels exactly as they were.
   const QImage original = image.convertToFormat(QImage::Format_RGB32);
   std::vector<QImage> out;
-  for (const QImage& r : raw) {
-    QImage v = Scaled(r.convertToFormat(QImage::Format_RGB32), original.width(), original.height());
+  for (size_t i = 0; i < raw.size(); ++i) {
+    // The embedded inpainter's variations without detail are one picture, shared.
+    if (i > 0 && raw[i].cacheKey() == raw[i - 1].cacheKey()) {
+      out.push_back(out.back());
+      continue;
+    }
+    QImage v =
+        Scaled(raw[i].convertToFormat(QImage::Format_RGB32), original.width(), original.height());
     for (int y = 0; y < v.height(); ++y)
       for (int x = 0; x < v.width(); ++x)
         if (qGray(mask.pixel(x, y)) <= 127) v.setPixel(x, y, original.pixel(x, y));

@@ -104,9 +104,14 @@ bool AutomaticPickCanTake(const HoleChoice& choice, const std::string& kind) {
 void PickVariation(HoleVariations& hole, int pick, const std::string& pick_kind) {
   HoleChoice& c = hole.choice;
   c.scores.clear();
-  for (const QImage& v : hole.variations)
-    c.scores.push_back(v.isNull() ? std::numeric_limits<double>::quiet_NaN()
-                                  : ScoreVariation(v, hole.mask));
+  const std::vector<QImage>& v = hole.variations;
+  for (size_t j = 0; j < v.size(); ++j)
+    if (v[j].isNull())
+      c.scores.push_back(std::numeric_limits<double>::quiet_NaN());
+    else if (j > 0 && !v[j - 1].isNull() && v[j].cacheKey() == v[j - 1].cacheKey())
+      c.scores.push_back(c.scores.back()); // one picture shared: the same score
+    else
+      c.scores.push_back(ScoreVariation(v[j], hole.mask));
   c.pick = pick > 0 ? std::min(pick, int(hole.variations.size())) : AutomaticPick(c);
   if (!pick_kind.empty()) {
     c.pick_note = "it has no " + pick_kind + " variation";
