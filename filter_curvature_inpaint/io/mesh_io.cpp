@@ -215,10 +215,8 @@ private:
 /// element and property is skipped. vcglib's PLY reader reads a polygon's corners before it
 /// checks them (a heap overflow on a malformed file), so the product reads PLY itself.
 /// Returns the vcglib mask of what the file holds. Throws MeshIoError.
-int ReadPly(const std::string& path, CMeshO& m) {
+int ReadPly(const std::string& path, const std::string& data, CMeshO& m) {
   using Mask = vcg::tri::io::Mask;
-  std::ifstream in(path, std::ios::binary);
-  const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   auto fail = [&](const std::string& why) {
     throw MeshIoError(path + ": not a readable mesh (" + why + ")");
   };
@@ -390,9 +388,7 @@ void SetMesh(CMeshO& m, const std::vector<Point3m>& points,
 /// Reads an STL file, binary or ASCII, into `m` (a triangle soup, welded by the caller).
 /// vcglib's ASCII reader loops forever on a file without a line break, so the product reads
 /// STL itself. Throws MeshIoError.
-void ReadStl(const std::string& path, CMeshO& m) {
-  std::ifstream in(path, std::ios::binary);
-  const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+void ReadStl(const std::string& path, const std::string& data, CMeshO& m) {
   std::vector<Point3m> corners;
   uint32_t count = 0;
   if (data.size() >= 84) std::memcpy(&count, data.data() + 80, 4);
@@ -427,8 +423,8 @@ void ReadStl(const std::string& path, CMeshO& m) {
 /// Reads an OFF file (OFF, COFF, NOFF, STOFF and their combinations; positions and faces,
 /// polygons fanned into triangles) into `m`. vcglib's OFF reader overruns its buffers and
 /// reads freed memory on malformed files, so the product reads OFF itself. Throws MeshIoError.
-void ReadOff(const std::string& path, CMeshO& m) {
-  std::ifstream in(path, std::ios::binary);
+void ReadOff(const std::string& path, const std::string& data, CMeshO& m) {
+  std::istringstream in(data);
   auto fail = [&](const std::string& why) {
     throw MeshIoError(path + ": not a readable mesh (" + why + ")");
   };
@@ -488,8 +484,8 @@ void ReadOff(const std::string& path, CMeshO& m) {
 /// OBJ reader keeps a counter in a static variable across files and reads vertex colours past
 /// the end of its array, so the product reads OBJ itself. Sets `has_color` when every vertex
 /// carries a colour. Throws MeshIoError.
-void ReadObj(const std::string& path, CMeshO& m, bool& has_color) {
-  std::ifstream in(path, std::ios::binary);
+void ReadObj(const std::string& path, const std::string& data, CMeshO& m, bool& has_color) {
+  std::istringstream in(data);
   auto fail = [&](long long line, const std::string& why) {
     throw MeshIoError(path + ": not a readable mesh (line " + std::to_string(line) + ": " + why +
                       ")");
@@ -559,21 +555,33 @@ void CheckMeshFormat(const std::string& path) {
     throw MeshIoError(path + ": unsupported format \"" + ext + "\" (use .ply, .off, .obj or .stl)");
 }
 
+std::string ReadMeshFile(const std::string& path) {
+  CheckMeshFormat(path);
+  std::ifstream in(path, std::ios::binary);
+  if (!in.good()) throw MeshIoError(path + ": cannot open the file");
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw MeshIoError(path + ": cannot read the file");
+  return bytes;
+}
+
 int LoadMesh(const std::string& path, CMeshO& m) {
+  return LoadMesh(path, ReadMeshFile(path), m);
+}
+
+int LoadMesh(const std::string& path, const std::string& bytes, CMeshO& m) {
   CheckMeshFormat(path);
   const std::string ext = Extension(path);
-  if (!std::ifstream(path).good()) throw MeshIoError(path + ": cannot open the file");
   int mask = vcg::tri::io::Mask::IOM_VERTCOORD | vcg::tri::io::Mask::IOM_FACEINDEX;
   if (ext == "ply") {
-    mask = ReadPly(path, m);
+    mask = ReadPly(path, bytes, m);
   } else if (ext == "obj") {
     bool has_color = false;
-    ReadObj(path, m, has_color);
+    ReadObj(path, bytes, m, has_color);
     if (has_color) mask |= vcg::tri::io::Mask::IOM_VERTCOLOR;
   } else if (ext == "off") {
-    ReadOff(path, m);
+    ReadOff(path, bytes, m);
   } else {
-    ReadStl(path, m);
+    ReadStl(path, bytes, m);
     // STL stores each triangle with its own corners: weld them, as MeshLab does on import,
     // or every triangle would be a hole of its own.
     vcg::tri::Clean<CMeshO>::RemoveDuplicateVertex(m);

@@ -24,6 +24,14 @@ void CheckMeshFormat(const std::string& path);
 /// so SaveMesh can write the same attributes back. Throws MeshIoError.
 int LoadMesh(const std::string& path, CMeshO& m);
 
+/// The bytes of the mesh file `path`, for a caller that reads them once for more than loading
+/// (batch hashes them too). Throws MeshIoError (an unsupported format, an unreadable file).
+std::string ReadMeshFile(const std::string& path);
+
+/// LoadMesh from `bytes`, the content of the file `path` (its extension names the format, its
+/// name goes into the messages).
+int LoadMesh(const std::string& path, const std::string& bytes, CMeshO& m);
+
 /// Writes `m` to `path` with the attributes in `mask`. The file appears complete or not at
 /// all: it is written beside the target (or in `partial_dir`, on the same file system) and
 /// renamed over it. Throws MeshIoError.

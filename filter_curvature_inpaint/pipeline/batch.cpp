@@ -35,11 +35,11 @@ bool IsMeshFile(const QString& name) {
   return s == "ply" || s == "obj" || s == "off" || s == "stl";
 }
 
-std::string Sha256(const std::string& path) {
-  QFile f(QString::fromStdString(path));
-  if (!f.open(QIODevice::ReadOnly)) return "";
+std::string Sha256(const std::string& bytes) {
   QCryptographicHash hash(QCryptographicHash::Sha256);
-  if (!hash.addData(&f)) return "";
+  const size_t chunk = size_t(1) << 30; // Qt 5 takes an int length
+  for (size_t at = 0; at < bytes.size(); at += chunk)
+    hash.addData(bytes.data() + at, int(std::min(chunk, bytes.size() - at)));
   return hash.result().toHex().toStdString();
 }
 
@@ -178,7 +178,14 @@ BatchSummary RunBatch(const std::vector<BatchScan>& all, const BatchParams& para
       const std::string name = in.fileName().toStdString();
       std::vector<std::string> options = params.options;
       options.insert(options.end(), scan.options.begin(), scan.options.end());
-      const std::string sha = Sha256(scan.input);
+      // Read once: hashed to know whether it was done before, then loaded from the same bytes.
+      std::string scan_bytes, unreadable;
+      try {
+        scan_bytes = ReadMeshFile(scan.input);
+      } catch (const MeshIoError& e) {
+        unreadable = e.what();
+      }
+      const std::string sha = unreadable.empty() ? Sha256(scan_bytes) : "";
       if (!sha.empty() && finished.count(Key(sha, options))) {
         std::lock_guard<std::mutex> lock(mutex);
         ++summary.skipped;
@@ -195,12 +202,13 @@ BatchSummary RunBatch(const std::vector<BatchScan>& all, const BatchParams& para
       line.insert("output", QString::fromStdString(name));
       std::string what;
       try {
-        if (sha.empty()) throw std::runtime_error("cannot read " + scan.input);
+        if (!unreadable.empty()) throw std::runtime_error(unreadable);
         HoleFillParams p = parse(options);
         if (std::find(options.begin(), options.end(), "--threads") == options.end())
           p.images.coarse.threads = std::max(1, cores / jobs);
         CMeshO m;
-        const int mask = LoadMesh(scan.input, m);
+        const int mask = LoadMesh(scan.input, scan_bytes, m);
+        std::string().swap(scan_bytes);
         const HoleFillResult result = FillHoles(m, p);
         // Written in a hidden folder and renamed into place: a kill leaves nothing half-written
         // among the results.
