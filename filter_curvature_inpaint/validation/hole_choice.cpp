@@ -73,16 +73,29 @@ bool CoarseValidatedBest(const HoleChoice& choice) {
          v.candidates[size_t(v.chosen)] == "coarse";
 }
 
+namespace {
+
+/// The kind of variation the validation chose where it chose one ("tri-laplacian",
+/// "symmetry", ...); empty where it chose an amplitude of the inpainter ("detail 0.5"), the
+/// coarse fill, or nothing.
+std::string ValidatedKind(const ValidationRecord& v) {
+  if (v.chosen < 0 || size_t(v.chosen) >= v.candidates.size()) return "";
+  const std::string& chosen = v.candidates[size_t(v.chosen)];
+  const std::vector<std::string> kinds = VariationKindNames();
+  return std::find(kinds.begin(), kinds.end(), chosen) != kinds.end() ? chosen : "";
+}
+
+} // namespace
+
 int AutomaticPick(const HoleChoice& choice) {
   if (CoarseValidatedBest(choice) || choice.validation.no_evidence) return 0;
-  const ValidationRecord& v = choice.validation;
-  if (v.chosen >= 0 && size_t(v.chosen) < v.candidates.size())
-    for (size_t j = 0; j < choice.kinds.size(); ++j)
-      if (choice.kinds[j] == v.candidates[size_t(v.chosen)]) return int(j) + 1;
+  const std::string validated = ValidatedKind(choice.validation);
+  for (size_t j = 0; j < choice.kinds.size() && !validated.empty(); ++j)
+    if (choice.kinds[j] == validated) return int(j) + 1;
   // A prior's variation is chosen only where it validated best: nothing is forced on a hole.
   int best = 0;
   for (size_t j = 0; j < choice.kinds.size() && j < choice.scores.size(); ++j)
-    if (choice.kinds[j] == "continuation" &&
+    if (choice.kinds[j] == FillKindName(FillKind::kContinuation) &&
         (best == 0 || choice.scores[j] > choice.scores[size_t(best - 1)]))
       best = int(j) + 1;
   return best > 0 || choice.kinds.empty() ? best : 1;
@@ -90,15 +103,10 @@ int AutomaticPick(const HoleChoice& choice) {
 
 bool AutomaticPickCanTake(const HoleChoice& choice, const std::string& kind) {
   if (CoarseValidatedBest(choice) || choice.validation.no_evidence) return false;
-  const ValidationRecord& v = choice.validation;
-  if (v.chosen >= 0 && size_t(v.chosen) < v.candidates.size()) {
-    const std::vector<std::string> kinds = VariationKindNames();
-    if (std::find(kinds.begin(), kinds.end(), v.candidates[size_t(v.chosen)]) != kinds.end())
-      return kind == v.candidates[size_t(v.chosen)];
-  }
-  // An amplitude of the embedded inpainter ("detail 0.5") validated best, or nothing was
-  // validated: the best-scored continuation.
-  return kind == FillKindName(FillKind::kContinuation);
+  // The validated prior's variation; where an amplitude of the embedded inpainter validated
+  // best, or nothing was validated, the best-scored continuation.
+  const std::string validated = ValidatedKind(choice.validation);
+  return kind == (validated.empty() ? FillKindName(FillKind::kContinuation) : validated);
 }
 
 void PickVariation(HoleVariations& hole, int pick, const std::string& pick_kind) {
