@@ -25,6 +25,7 @@
 #include <cstdlib>
 #include <memory>
 
+using curvature_inpaint::FillKind;
 using curvature_inpaint::HoleFillDialog;
 
 namespace {
@@ -176,23 +177,22 @@ private slots:
       // Three continuations, then the priors' variations where the hole has them.
       QVERIFY(hole.variations.size() >= 3);
       QCOMPARE(hole.choice.kinds.size(), hole.variations.size());
-      for (size_t j = 0; j < 3; ++j) QCOMPARE(hole.choice.kinds[j], std::string("continuation"));
+      for (size_t j = 0; j < 3; ++j) QVERIFY(hole.choice.kinds[j] == FillKind::kContinuation);
       // The automatic pick: Skip where the fake holes found the coarse fill closest, a prior's
       // variation where it validated best, else the best-scored continuation; the dialog
       // shows the validation.
       QVERIFY(!hole.choice.validation.candidates.empty());
-      const std::string& choice =
-          hole.choice.validation.candidates[size_t(hole.choice.validation.chosen)];
+      const curvature_inpaint::TriedFill& choice = hole.choice.validation.Chosen();
       const int best =
           int(std::max_element(hole.choice.scores.begin(), hole.choice.scores.begin() + 3) -
               hole.choice.scores.begin()) +
           1;
-      if (choice == "coarse")
+      if (choice.kind == FillKind::kCoarse)
         QCOMPARE(hole.choice.pick, 0);
-      else if (choice.rfind("detail", 0) == 0)
+      else if (choice.kind == FillKind::kContinuation)
         QCOMPARE(hole.choice.pick, best);
       else
-        QCOMPARE(hole.choice.kinds[size_t(hole.choice.pick - 1)], choice);
+        QVERIFY(hole.choice.kinds[size_t(hole.choice.pick - 1)] == choice.kind);
     }
     // The choice in words; the numbers only in the tooltip, and no score in any caption.
     const QString choice = Find<QLabel>(d, "validation_1")->text();
@@ -263,10 +263,12 @@ private slots:
     QVERIFY2(hole.choice.problem.empty(), hole.choice.problem.c_str());
     QVERIFY2(hole.choice.priors.no_symmetry.empty(), hole.choice.priors.no_symmetry.c_str());
     // The egg is smooth all round: the crease prior offers its one face extended too.
-    QCOMPARE(hole.choice.kinds,
-             (std::vector<std::string>{"continuation", "continuation", "exemplar", "exemplar",
-                                       "tri-laplacian", "symmetry", "symmetry surface", "face"}));
-    QCOMPARE(hole.choice.kinds[size_t(hole.choice.pick - 1)], std::string("continuation"));
+    QVERIFY(
+        hole.choice.kinds ==
+        (std::vector<FillKind>{FillKind::kContinuation, FillKind::kContinuation,
+                               FillKind::kExemplar, FillKind::kExemplar, FillKind::kTriLaplacian,
+                               FillKind::kSymmetry, FillKind::kSymmetrySurface, FillKind::kFace}));
+    QVERIFY(hole.choice.kinds[size_t(hole.choice.pick - 1)] == FillKind::kContinuation);
     // Each item says its kind; the two continuations, identical at detail 0, are one item;
     // clicking the mirrored surface chooses it.
     auto* list = Find<QListWidget>(d, "variations_1");
@@ -290,7 +292,7 @@ private slots:
     CMeshO applied;
     curvature_inpaint::CopyMesh(egg, applied);
     const auto result = curvature_inpaint::FillHoles(applied, d.Params(), nullptr, &d.Holes());
-    QCOMPARE(result.holes[0].kind, std::string("symmetry surface"));
+    QVERIFY(result.holes[0].kind == FillKind::kSymmetrySurface);
     QVERIFY(std::abs(test::FillHeight(applied, scan_vertices, bump) - test::kEggBump) <
             0.1 * test::kEggBump);
     // Unchecked, the preview offers the continuations alone.
@@ -300,7 +302,8 @@ private slots:
     Find<QCheckBox>(d, "creases")->setChecked(false);
     d.Inpaint();
     QTRY_VERIFY_WITH_TIMEOUT(!d.Busy(), 120000);
-    QCOMPARE(d.Holes()[0].choice.kinds, (std::vector<std::string>{"continuation", "continuation"}));
+    QVERIFY(d.Holes()[0].choice.kinds ==
+            (std::vector<FillKind>{FillKind::kContinuation, FillKind::kContinuation}));
   }
 
   void reroll_replaces_one_hole() {

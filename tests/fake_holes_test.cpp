@@ -7,6 +7,7 @@
 namespace {
 
 using namespace fixtures;
+using curvature_inpaint::FillKind;
 
 /// Centre and radius of a loop's vertices.
 std::pair<Eigen::Vector3d, double> LoopBall(const CMeshO& m, const std::vector<int>& loop) {
@@ -248,9 +249,9 @@ TEST(FakeHoles, AShapeReplacesTheSmoothFillOnlyWhereItIsClearlyCloser) {
 // better: which one did best, and on how many test cuts.
 TEST(FakeHoles, AChoiceWithoutAClearWinnerSaysSo) {
   curvature_inpaint::HoleChoice c;
-  c.kinds = {"continuation", "symmetry surface"};
+  c.kinds = {FillKind::kContinuation, FillKind::kSymmetrySurface};
   c.pick = 0;
-  c.validation.candidates = {"coarse", "symmetry surface"};
+  c.validation.candidates = {{FillKind::kCoarse}, {FillKind::kSymmetrySurface}};
   c.validation.errors = {0.2, 0.185};
   c.validation.per_fake_hole = {{0.1, 0.05}, {0.3, 0.32}};
   c.validation.fake_holes = 2;
@@ -265,7 +266,7 @@ TEST(FakeHoles, TheValidatedChoiceIsTheSameForAnyThreadCount) {
   CMeshO truth;
   MakeBumpySphere(truth);
   std::vector<std::vector<Point3m>> results;
-  std::vector<std::vector<std::string>> choices;
+  std::vector<std::vector<curvature_inpaint::TriedFill>> choices;
   std::vector<std::vector<curvature_inpaint::HoleVariations>> previews;
   // 8 threads over the 3 holes leave each hole's fake holes 2 of their own.
   for (int threads : {1, 2, 8}) {
@@ -286,7 +287,7 @@ TEST(FakeHoles, TheValidatedChoiceIsTheSameForAnyThreadCount) {
     for (size_t k = 0; k < result.holes.size(); ++k) {
       const auto& h = result.holes[k];
       ASSERT_FALSE(h.choice.validation.candidates.empty()) << h.choice.validation.note;
-      choices.back().push_back(h.choice.validation.candidates[size_t(h.choice.validation.chosen)]);
+      choices.back().push_back(h.choice.validation.Chosen());
       // The preview validates as the fill does.
       EXPECT_EQ(previews.back()[k].choice.validation.candidates, h.choice.validation.candidates)
           << threads << " " << k;
@@ -352,7 +353,7 @@ TEST(FakeHoles, AHoleFarFlatterAroundThanItsFakeHolesKeepsTheSmoothFill) {
     const bool kept = r.choice.validation.note.find("times flatter") != std::string::npos;
     if (max_flatter > 0) {
       EXPECT_TRUE(kept) << r.choice.validation.note;
-      EXPECT_EQ(r.choice.validation.candidates[size_t(r.choice.validation.chosen)], "coarse");
+      EXPECT_EQ(r.choice.validation.Chosen().kind, FillKind::kCoarse);
       EXPECT_EQ(r.choice.pick, 0) << "the coarse fill, not a variation";
     } else {
       EXPECT_FALSE(kept) << r.choice.validation.note;
@@ -385,8 +386,8 @@ TEST(FakeHoles, TheRockerArmsFlatStretchKeepsTheSmoothFillItsFakeHolesWouldBend)
     ASSERT_FALSE(r.choice.validation.candidates.empty()) << described;
     const bool kept = r.choice.validation.note.find("times flatter") != std::string::npos;
     EXPECT_EQ(kept, bool(gated)) << described;
-    EXPECT_EQ(r.choice.validation.candidates[size_t(r.choice.validation.chosen)],
-              gated ? "coarse" : "tri-laplacian")
+    EXPECT_EQ(r.choice.validation.Chosen().kind,
+              gated ? FillKind::kCoarse : FillKind::kTriLaplacian)
         << described;
     double sum = 0;
     const std::vector<double> errors = FillErrors(truth, m, scan_vertices, diagonal);

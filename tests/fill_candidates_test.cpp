@@ -23,24 +23,29 @@ TEST(FillCandidates, EveryKindHasANameOfItsOwnAndWordsForALog) {
   for (int k = int(FillKind::kCoarse); k <= int(FillKind::kFace); ++k) {
     const std::string name = FillKindName(FillKind(k));
     EXPECT_TRUE(names.insert(name).second) << name << " names two kinds";
-    EXPECT_NE(curvature_inpaint::KindInWords(name), name) << name << " has no words";
+    EXPECT_NE(curvature_inpaint::KindInWords(FillKind(k)), name) << name << " has no words";
+    // --pick reads a variation's kind back from its name.
+    FillKind read = FillKind::kCoarse;
+    EXPECT_EQ(curvature_inpaint::VariationKindNamed(name, &read), FillKind(k) != FillKind::kCoarse)
+        << name;
+    if (FillKind(k) != FillKind::kCoarse) EXPECT_EQ(read, FillKind(k));
   }
-  const std::vector<std::string> variations = curvature_inpaint::VariationKindNames();
+  const std::vector<FillKind> variations = curvature_inpaint::VariationKinds();
   EXPECT_EQ(variations.size(), names.size() - 1);
-  EXPECT_EQ(std::count(variations.begin(), variations.end(), "coarse"), 0);
+  EXPECT_EQ(std::count(variations.begin(), variations.end(), FillKind::kCoarse), 0);
 }
 
 TEST(FillCandidates, EachKindComesFromOneCandidateAndOnlyTheCoarseFillIsNoVariation) {
   // Without a patch the crease prior names its "creases"; inside one face it is "face".
   const curvature_inpaint::PatchWork none;
-  std::map<std::string, int> offered;
+  std::map<FillKind, int> offered;
   for (const FillCandidate* c : FillCandidates()) {
-    ++offered[FillKindName(c->KindAt(none))];
+    ++offered[c->KindAt(none)];
     EXPECT_EQ(c->IsVariation(), c->KindAt(none) != FillKind::kCoarse);
   }
-  for (const std::string& kind : curvature_inpaint::VariationKindNames())
-    if (kind != "face") EXPECT_EQ(offered[kind], 1) << kind;
-  EXPECT_EQ(offered["coarse"], 1);
+  for (FillKind kind : curvature_inpaint::VariationKinds())
+    if (kind != FillKind::kFace) EXPECT_EQ(offered[kind], 1) << FillKindName(kind);
+  EXPECT_EQ(offered[FillKind::kCoarse], 1);
 }
 
 /// The symmetric egg in `m` with a hole over its first bump; returns its vertex count (the
@@ -59,7 +64,8 @@ void ExpectTheBumpBackFromItsTwin(const curvature_inpaint::HoleFillResult& resul
   const auto& r = result.holes[0];
   ASSERT_TRUE(r.choice.problem.empty()) << r.choice.problem;
   ASSERT_FALSE(r.choice.validation.candidates.empty()) << r.choice.validation.note;
-  EXPECT_EQ(r.kind.rfind("symmetry", 0), 0u) << "chose " << r.kind << ": " << Validation(r);
+  EXPECT_TRUE(r.kind == FillKind::kSymmetry || r.kind == FillKind::kSymmetrySurface)
+      << "chose " << FillKindName(r.kind) << ": " << Validation(r);
   // The twin's height is the bump's: the mirror image brings it back.
   EXPECT_NEAR(test::FillHeight(m, scan_vertices, bump), test::kEggBump, 0.1 * test::kEggBump);
   // The egg's halves are exact twins: the image covers the fill, its ring lies on the ring.
@@ -123,13 +129,11 @@ TEST(Symmetry, AHoleWhoseTwinIsMissingTooKeepsTheContinuation) {
     ASSERT_TRUE(r.choice.problem.empty() ||
                 r.choice.problem.find("coarse fill validated") != std::string::npos)
         << r.choice.problem;
-    EXPECT_EQ(std::count(r.choice.validation.candidates.begin(),
-                         r.choice.validation.candidates.end(), "symmetry"),
-              0);
+    EXPECT_EQ(TriedOfKind(r.choice.validation, FillKind::kSymmetry), 0);
     EXPECT_EQ(r.choice.validation.mirror_fake_holes, 0) << "the mirror place is the other hole";
     EXPECT_LT(r.choice.priors.mirror_covered, 0) << "its mirror image is in the other hole";
     if (r.choice.problem.empty())
-      EXPECT_TRUE(r.kind == "continuation" || r.kind == "tri-laplacian");
+      EXPECT_TRUE(r.kind == FillKind::kContinuation || r.kind == FillKind::kTriLaplacian);
   }
 }
 
@@ -165,15 +169,15 @@ double CubeDistance(const Point3m& p) {
 
 /// Fills the one hole punched in `m` as FillWithoutSymmetry does; whether the crease prior's
 /// variation filled it (a failure recorded where not).
-bool FillsOneHoleWithCreases(CMeshO& m, const std::string& pick_kind = "") {
+bool FillsOneHoleWithCreases(CMeshO& m, FillKind pick_kind = FillKind::kCoarse) {
   const auto result = FillWithoutSymmetry(m, pick_kind);
   if (result.holes.size() != 1) {
     ADD_FAILURE() << result.holes.size() << " holes";
     return false;
   }
   const auto& r = result.holes[0];
-  if (!r.choice.problem.empty() || r.kind != "creases") {
-    ADD_FAILURE() << "filled as " << r.kind << ": " << r.choice.problem << "; "
+  if (!r.choice.problem.empty() || r.kind != FillKind::kCreases) {
+    ADD_FAILURE() << "filled as " << FillKindName(r.kind) << ": " << r.choice.problem << "; "
                   << r.choice.priors.no_creases << "; " << Validation(r);
     return false;
   }
@@ -212,11 +216,11 @@ std::vector<double> FandiskCreaseFillErrors(int seed_vertex, double radius_frac 
   vcg::tri::UpdateBounding<CMeshO>::Box(m);
   const size_t scan_vertices = m.vert.size();
   HoleFillParams p = SmallImages();
-  p.pick_kind = "creases";
+  p.pick_kind = FillKind::kCreases;
   p.validation.fake_holes = 0;
   const auto result = FillHoles(m, p);
   EXPECT_EQ(result.holes.size(), 1u);
-  if (result.holes.size() != 1 || result.holes[0].kind != "creases") {
+  if (result.holes.size() != 1 || result.holes[0].kind != FillKind::kCreases) {
     ADD_FAILURE() << "no crease fill: "
                   << (result.holes.empty() ? "" : result.holes[0].choice.problem);
     return {};
@@ -291,7 +295,7 @@ TEST(Creases, AHoleOnACubesEdgeAndOneOnItsCornerComeBackSharp) {
   ASSERT_EQ(result.holes.size(), 2u);
   for (const auto& r : result.holes) {
     ASSERT_TRUE(r.choice.problem.empty()) << r.choice.problem;
-    EXPECT_EQ(r.kind, "creases") << Validation(r);
+    EXPECT_EQ(r.kind, FillKind::kCreases) << Validation(r);
     EXPECT_TRUE(r.choice.priors.has_creases);
     EXPECT_GT(r.crease_flips, 0);
   }
@@ -372,7 +376,7 @@ TEST(Creases, AFillOnAnOrganicSurfaceIsNeverFlippedOntoCreases) {
   vcg::tri::UpdateBounding<CMeshO>::Box(m);
   HoleFillParams p = SmallImages();
   p.validation.fake_holes = 0;
-  for (const char* kind : {"continuation", "tri-laplacian"}) {
+  for (FillKind kind : {FillKind::kContinuation, FillKind::kTriLaplacian}) {
     CMeshO filled;
     curvature_inpaint::CopyMesh(m, filled);
     p.pick_kind = kind;
@@ -382,7 +386,7 @@ TEST(Creases, AFillOnAnOrganicSurfaceIsNeverFlippedOntoCreases) {
     for (const auto& r : result.holes) {
       EXPECT_EQ(r.kind, kind);
       EXPECT_FALSE(r.choice.priors.has_creases) << r.choice.priors.no_creases;
-      EXPECT_EQ(r.crease_flips, 0) << kind;
+      EXPECT_EQ(r.crease_flips, 0) << FillKindName(kind);
     }
   }
 }
@@ -524,7 +528,7 @@ TEST(Creases, AHoleWhereAStepMeetsASideFaceComesBackOnTheSolid) {
   curvature_inpaint::CopyMesh(truth, m);
   vcg_ext::PunchHole(m, Point3m(0.25f, 1, 0.75f), Scalarm(0.4));
   const size_t scan_vertices = m.vert.size();
-  ASSERT_TRUE(FillsOneHoleWithCreases(m, "creases"));
+  ASSERT_TRUE(FillsOneHoleWithCreases(m, FillKind::kCreases));
   const std::vector<double> errors = FillErrors(truth, m, scan_vertices, 1.0);
   ASSERT_FALSE(errors.empty());
   EXPECT_LT(*std::max_element(errors.begin(), errors.end()), 0.005);
@@ -540,7 +544,7 @@ TEST(Creases, AHoleInOneFaceBesideAnEdgeGetsTheFaceExtended) {
   MakeRevolved(m, 2.0, 40, 64, [](double) { return 1.0; });
   vcg_ext::PunchHole(m, Point3m(1, 0, 1.65f), Scalarm(0.25));
   const size_t scan_vertices = m.vert.size();
-  ASSERT_TRUE(FillsOneHoleWithCreases(m, "creases"));
+  ASSERT_TRUE(FillsOneHoleWithCreases(m, FillKind::kCreases));
   ASSERT_GT(m.vert.size(), scan_vertices);
   for (size_t v = scan_vertices; v < m.vert.size(); ++v)
     EXPECT_NEAR(std::hypot(m.vert[v].cP()[0], m.vert[v].cP()[1]), 1, 0.005) << v;
@@ -559,18 +563,18 @@ TEST(Creases, AHoleInOneFaceWithNoCreaseNearGetsTheFaceExtended) {
     const size_t scan_vertices = m.vert.size();
     HoleFillParams p = SmallImages();
     p.symmetry.enabled = false;
-    p.pick_kind = "face";
+    p.pick_kind = FillKind::kFace;
     p.crease_fill.face_without_crease = face;
     const auto result = FillHoles(m, p);
     ASSERT_EQ(result.holes.size(), 1u);
     const auto& r = result.holes[0];
     if (!face) {
       EXPECT_EQ(r.choice.priors.no_creases, "no crease runs into it");
-      EXPECT_NE(r.kind, "face");
+      EXPECT_NE(r.kind, FillKind::kFace);
       continue;
     }
     ASSERT_TRUE(r.choice.problem.empty()) << r.choice.problem;
-    EXPECT_EQ(r.kind, "face") << r.choice.priors.no_creases;
+    EXPECT_EQ(r.kind, FillKind::kFace) << r.choice.priors.no_creases;
     ASSERT_GT(m.vert.size(), scan_vertices);
     for (size_t v = scan_vertices; v < m.vert.size(); ++v)
       EXPECT_NEAR(std::hypot(m.vert[v].cP()[0], m.vert[v].cP()[1]), 1, 0.005) << v;
@@ -619,27 +623,23 @@ TEST(TriLaplacian, AHoleOnAnEllipsoidComesBackCloserThanTheThinPlate) {
   curvature_inpaint::CopyMesh(m, picked);
   HoleFillParams pick = p;
   pick.validation.fake_holes = 0;
-  pick.pick_kind = "tri-laplacian";
+  pick.pick_kind = FillKind::kTriLaplacian;
   const auto direct = FillHoles(picked, pick);
   ASSERT_EQ(direct.holes.size(), 1u);
-  EXPECT_EQ(direct.holes[0].kind, "tri-laplacian");
+  EXPECT_EQ(direct.holes[0].kind, FillKind::kTriLaplacian);
   EXPECT_LT(rms(picked), 0.5 * rms(coarse)) << rms(coarse);
 
   const auto validated = FillHoles(m, p);
   ASSERT_EQ(validated.holes.size(), 1u);
   const auto& r = validated.holes[0];
-  EXPECT_EQ(r.kind, "tri-laplacian") << Validation(r);
-  EXPECT_EQ(std::count(r.choice.validation.candidates.begin(), r.choice.validation.candidates.end(),
-                       "tri-laplacian"),
-            1);
+  EXPECT_EQ(r.kind, FillKind::kTriLaplacian) << Validation(r);
+  EXPECT_EQ(TriedOfKind(r.choice.validation, FillKind::kTriLaplacian), 1);
   // Off: neither a candidate nor a variation.
   p.tri_laplacian = false;
   const auto off = FillHoles(holed, p);
-  EXPECT_EQ(std::count(off.holes[0].choice.validation.candidates.begin(),
-                       off.holes[0].choice.validation.candidates.end(), "tri-laplacian"),
-            0);
+  EXPECT_EQ(TriedOfKind(off.holes[0].choice.validation, FillKind::kTriLaplacian), 0);
   EXPECT_EQ(std::count(off.holes[0].choice.kinds.begin(), off.holes[0].choice.kinds.end(),
-                       "tri-laplacian"),
+                       FillKind::kTriLaplacian),
             0);
 }
 

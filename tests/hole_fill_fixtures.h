@@ -26,7 +26,20 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <ostream>
 #include <string>
+
+namespace curvature_inpaint {
+
+// gtest prints the kinds by their names.
+inline void PrintTo(FillKind kind, std::ostream* os) {
+  *os << FillKindName(kind);
+}
+inline void PrintTo(const TriedFill& fill, std::ostream* os) {
+  *os << TriedFillName(fill);
+}
+
+} // namespace curvature_inpaint
 
 namespace fixtures {
 
@@ -171,14 +184,22 @@ inline void MakeCube(CMeshO& m, int n) {
 
 /// Fills the holes punched in `m` with the small images and without the mirror prior (the
 /// boxes and the cylinder below are symmetric: their mirror image would restore what the prior
-/// under test should), taking the variation of `pick_kind` where one is given.
-inline curvature_inpaint::HoleFillResult FillWithoutSymmetry(CMeshO& m,
-                                                             const std::string& pick_kind = "") {
+/// under test should), taking the variation of `pick_kind` where one is given (not kCoarse).
+inline curvature_inpaint::HoleFillResult
+FillWithoutSymmetry(CMeshO& m,
+                    curvature_inpaint::FillKind pick_kind = curvature_inpaint::FillKind::kCoarse) {
   vcg::tri::UpdateBounding<CMeshO>::Box(m);
   HoleFillParams p = SmallImages();
   p.symmetry.enabled = false;
   p.pick_kind = pick_kind;
   return FillHoles(m, p);
+}
+
+/// How many of the ways the validation tried are of `kind`.
+inline long TriedOfKind(const curvature_inpaint::ValidationRecord& v,
+                        curvature_inpaint::FillKind kind) {
+  return std::count_if(v.candidates.begin(), v.candidates.end(),
+                       [kind](const curvature_inpaint::TriedFill& c) { return c.kind == kind; });
 }
 
 /// The distance of each of `points` to the surface of `truth`, over `unit`.

@@ -107,8 +107,8 @@ TEST(Detail, TheAmplitudeChangesTheFillAndZeroIsTheSmoothContinuation) {
     const auto holes = curvature_inpaint::InpaintHoles(preview, p);
     ASSERT_EQ(holes.size(), 1u);
     ASSERT_GE(holes[0].variations.size(), 2u);
-    ASSERT_EQ(holes[0].choice.kinds[0], "continuation");
-    ASSERT_EQ(holes[0].choice.kinds[1], "continuation");
+    ASSERT_EQ(holes[0].choice.kinds[0], curvature_inpaint::FillKind::kContinuation);
+    ASSERT_EQ(holes[0].choice.kinds[1], curvature_inpaint::FillKind::kContinuation);
     if (detail == 0)
       EXPECT_EQ(holes[0].variations[0], holes[0].variations[1]) << "no detail, nothing random";
     else
@@ -151,9 +151,11 @@ TEST(Report, NumbersThatAreNotFiniteAreWrittenAsNull) {
   curvature_inpaint::HoleFillResult result;
   curvature_inpaint::HoleFillReport r;
   r.choice.scores = {std::numeric_limits<double>::quiet_NaN(), 0.25};
-  r.choice.kinds = {"continuation", "continuation"};
+  r.choice.kinds = {curvature_inpaint::FillKind::kContinuation,
+                    curvature_inpaint::FillKind::kContinuation};
   r.choice.pick = 2;
-  r.choice.validation.candidates = {"coarse", "tri-laplacian"};
+  r.choice.validation.candidates = {{curvature_inpaint::FillKind::kCoarse},
+                                    {curvature_inpaint::FillKind::kTriLaplacian}};
   r.choice.validation.errors = {0.5, std::numeric_limits<double>::infinity()};
   r.choice.validation.detail = {-1, -1};
   r.choice.validation.per_fake_hole = {{0.5, -std::numeric_limits<double>::infinity()}};
@@ -176,7 +178,7 @@ TEST(Report, NotesReadBackExactlyWhateverCharactersTheyHold) {
   const std::string note = "server said \"bad\" at C:\\scans\\a.ply\nthen\t\x01stopped";
   curvature_inpaint::HoleFillResult result;
   curvature_inpaint::HoleFillReport r;
-  r.choice.kinds = {"symmetry \"mirrored\""};
+  r.choice.kinds = {curvature_inpaint::FillKind::kSymmetrySurface};
   r.kind = r.choice.kinds[0];
   r.choice.validation.note = note;
   r.choice.priors.no_creases = note;
@@ -186,8 +188,8 @@ TEST(Report, NotesReadBackExactlyWhateverCharactersTheyHold) {
   EXPECT_EQ(hole["validation"].toObject()["note"].toString().toStdString(), note);
   EXPECT_EQ(hole["no_creases"].toString().toStdString(), note);
   EXPECT_EQ(hole["problem"].toString().toStdString(), note);
-  EXPECT_EQ(hole["kind"].toString().toStdString(), r.kind);
-  EXPECT_EQ(hole["kinds"].toArray()[0].toString().toStdString(), r.kind);
+  EXPECT_EQ(hole["kind"].toString().toStdString(), "symmetry surface");
+  EXPECT_EQ(hole["kinds"].toArray()[0].toString().toStdString(), "symmetry surface");
 }
 
 std::thread::id g_caller;
@@ -305,7 +307,7 @@ TEST(Variations, ContinuationsWithoutDetailAreOnePicturePaintedOnce) {
     ASSERT_GE(v.size(), 4u);
     std::set<qint64> pictures;
     for (size_t j = 0; j < 4; ++j) {
-      EXPECT_EQ(holes[0].choice.kinds[j], "continuation");
+      EXPECT_EQ(holes[0].choice.kinds[j], curvature_inpaint::FillKind::kContinuation);
       pictures.insert(v[j].cacheKey());
     }
     EXPECT_EQ(pictures.size(), detail > 0 ? 4u : 1u) << detail;

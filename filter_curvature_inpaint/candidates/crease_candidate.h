@@ -9,8 +9,9 @@ namespace curvature_inpaint {
 
 class CreaseCandidate final : public FillCandidate {
 public:
+  /// Faces meeting at creases, or where no crease runs into the hole, the one face around it.
   FillKind KindAt(const PatchWork& work) const override {
-    return work.crease && CreaseKind(*work.crease) == "face" ? FillKind::kFace : FillKind::kCreases;
+    return work.crease && work.crease->crease_edges == 0 ? FillKind::kFace : FillKind::kCreases;
   }
   bool Enabled(const HoleFillParams& params) const override { return params.creases; }
   CandidateNeeds Needs() const override { return {false, true, false}; }

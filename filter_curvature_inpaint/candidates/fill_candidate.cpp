@@ -9,25 +9,6 @@
 
 namespace curvature_inpaint {
 
-namespace {
-
-/// By FillKind.
-constexpr const char* kNames[] = {"coarse",   "continuation",     "exemplar", "tri-laplacian",
-                                  "symmetry", "symmetry surface", "creases",  "face"};
-
-} // namespace
-
-const char* FillKindName(FillKind kind) {
-  return kNames[static_cast<size_t>(kind)];
-}
-
-std::vector<std::string> VariationKindNames() {
-  std::vector<std::string> names;
-  for (size_t k = 0; k < sizeof kNames / sizeof *kNames; ++k)
-    if (static_cast<FillKind>(k) != FillKind::kCoarse) names.push_back(kNames[k]);
-  return names;
-}
-
 const std::vector<const FillCandidate*>& FillCandidates() {
   static const CoarseCandidate coarse;
   static const ContinuationCandidate continuation;

@@ -6,6 +6,7 @@
 // line in FillCandidates().
 #pragma once
 
+#include "candidates/fill_kind.h"
 #include "candidates/patch_fills.h"
 #include "candidates/symmetry_prior.h"
 #include "pipeline/curvature_images.h"
@@ -18,26 +19,6 @@
 #include <vector>
 
 namespace curvature_inpaint {
-
-/// The kinds of fill, as the report, the log, the dialog and `--pick` name them
-/// (FillKindName).
-enum class FillKind {
-  kCoarse,          ///< "coarse": the coarse fill as it is
-  kContinuation,    ///< "continuation": the backend's completion of the curvature image
-  kExemplar,        ///< "exemplar": patches of the known curvature copied in
-  kTriLaplacian,    ///< "tri-laplacian": the fill faired to continue the curvature around it
-  kSymmetry,        ///< "symmetry": the curvature of the mirror image
-  kSymmetrySurface, ///< "symmetry surface": the mirror image itself
-  kCreases,         ///< "creases": the faces around it extended until they meet
-  kFace,            ///< "face": the one smooth face around it extended
-};
-
-/// The kind's name at the edges (report, log, dialog, `--pick`).
-const char* FillKindName(FillKind kind);
-
-/// The names of the kinds a variation can have (all but the coarse fill), in FillKind's order:
-/// what `--pick` takes.
-std::vector<std::string> VariationKindNames();
 
 /// Where a candidate fills: a hole of the mesh, or a fake hole cut near one.
 struct PatchSite {

@@ -264,10 +264,6 @@ vcg_ext::CreaseFill CreasedPatch(const HoleImage& hi, const HoleFillParams& para
   return f;
 }
 
-std::string CreaseKind(const vcg_ext::CreaseFill& f) {
-  return f.crease_edges > 0 ? "creases" : "face";
-}
-
 PatchFill TriLaplacianPatch(const HoleImage& hi) {
   PatchFill f;
   f.points = hi.patch.points;

@@ -81,10 +81,6 @@ QImage SurfaceImage(const HoleImage& hi, const std::vector<Eigen::Vector3d>& poi
 /// triangles (docs/experiments.md, "The figures behind the defaults").
 vcg_ext::CreaseFill CreasedPatch(const HoleImage& hi, const HoleFillParams& params);
 
-/// The crease prior's kind of variation: its faces meeting at creases, or where no crease runs
-/// into the hole, the one face around it extended.
-std::string CreaseKind(const vcg_ext::CreaseFill& f);
-
 /// A patch with its fill vertices moved, or why there is none.
 struct PatchFill {
   std::vector<Eigen::Vector3d> points; ///< the whole patch, unit box

@@ -211,12 +211,6 @@ int InpaintCommand(Args& args, const Command& command) {
   return 0;
 }
 
-/// The kinds of variation --pick may name.
-const std::vector<std::string>& PickKinds() {
-  static const std::vector<std::string> kinds = curvature_inpaint::VariationKindNames();
-  return kinds;
-}
-
 /// One entry of --pick: 0 auto, -1 coarse, k >= 1 variation k; throws UsageError otherwise.
 int PickEntry(const std::string& entry) {
   if (entry == "auto") return 0;
@@ -225,7 +219,8 @@ int PickEntry(const std::string& entry) {
   const long n = std::strtol(entry.c_str(), &end, 10);
   if (entry.empty() || *end != '\0' || n < 1 || n > 1000) {
     std::string kinds;
-    for (const std::string& kind : PickKinds()) kinds += (kinds.empty() ? "" : ", ") + kind;
+    for (curvature_inpaint::FillKind kind : curvature_inpaint::VariationKinds())
+      kinds += (kinds.empty() ? "" : ", ") + std::string(curvature_inpaint::FillKindName(kind));
     throw UsageError("--pick: \"" + entry +
                      "\" is not auto, coarse, a variation number (1 to 1000) or a kind (" + kinds +
                      ")");
@@ -236,10 +231,7 @@ int PickEntry(const std::string& entry) {
 /// --pick: auto, coarse, a variation number or a kind for every hole, or a comma-separated list
 /// with one entry per hole, each auto, coarse or a number (what `preview` showed).
 void ReadPick(const std::string& pick, curvature_inpaint::HoleFillParams& p) {
-  if (std::find(PickKinds().begin(), PickKinds().end(), pick) != PickKinds().end()) {
-    p.pick_kind = pick;
-    return;
-  }
+  if (curvature_inpaint::VariationKindNamed(pick, &p.pick_kind)) return;
   if (pick.find(',') == std::string::npos) {
     p.pick = PickEntry(pick);
     return;

@@ -92,12 +92,13 @@ constexpr int kLastVariation = Qt::UserRole + 2;
 
 /// The validation candidate a variation was tried as: its kind, or for the inpainted
 /// continuations the detail amplitude they have; -1 where it was not tried.
-int CandidateOf(const HoleVariations& hv, const std::string& kind) {
+int CandidateOf(const HoleVariations& hv, FillKind kind) {
   const std::string name =
-      kind == "continuation" ? "detail " + QString::number(hv.detail, 'g', 3).toStdString() : kind;
-  const std::vector<std::string>& candidates = hv.choice.validation.candidates;
-  const auto it = std::find(candidates.begin(), candidates.end(), name);
-  return it == candidates.end() ? -1 : int(it - candidates.begin());
+      TriedFillName({kind, kind == FillKind::kContinuation ? hv.detail : -1.0});
+  const std::vector<TriedFill>& candidates = hv.choice.validation.candidates;
+  for (size_t c = 0; c < candidates.size(); ++c)
+    if (candidates[c].kind == kind && TriedFillName(candidates[c]) == name) return int(c);
+  return -1;
 }
 
 /// An item's caption: its numbers and kind, and where the hole was validated how the kind did
@@ -106,7 +107,7 @@ int CandidateOf(const HoleVariations& hv, const std::string& kind) {
 QString Caption(const HoleVariations& hv, const VariationRun& g, bool automatic) {
   QString caption = g.first == g.last ? QString::number(g.first + 1)
                                       : QString("%1-%2").arg(g.first + 1).arg(g.last + 1);
-  caption += ": " + QString::fromStdString(g.kind) + (automatic ? " (auto)" : "");
+  caption += ": " + QString(FillKindName(g.kind)) + (automatic ? " (auto)" : "");
   const int c = CandidateOf(hv, g.kind);
   if (c >= 0) {
     const std::string words = TestCutsInWords(hv.choice.validation, size_t(c));
@@ -625,12 +626,14 @@ void HoleFillDialog::ShowHoles() {
       icon.addPixmap(Thumbnail(image), QIcon::Selected);
       const bool automatic = group.first <= best && best <= group.last;
       auto* item = new QListWidgetItem(icon, Caption(hv, group, automatic));
-      item->setData(Qt::UserRole, QString::fromStdString(group.kind));
+      item->setData(Qt::UserRole, QString(FillKindName(group.kind)));
       item->setData(kFirstVariation, group.first);
       item->setData(kLastVariation, group.last);
       // How far to trust a mirror image: how much of the fill it covers and how far the two
       // halves differ around the hole.
-      if (group.kind.rfind("symmetry", 0) == 0 && choice.priors.mirror_covered >= 0)
+      const bool mirrored =
+          group.kind == FillKind::kSymmetry || group.kind == FillKind::kSymmetrySurface;
+      if (mirrored && choice.priors.mirror_covered >= 0)
         item->setToolTip(QString("From the object's mirror image, which covers %1 % of the fill; "
                                  "around the hole the two halves differ by %2 % of its radius.")
                              .arg(std::lround(100 * choice.priors.mirror_covered))

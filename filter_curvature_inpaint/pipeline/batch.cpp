@@ -220,12 +220,13 @@ BatchSummary RunBatch(const std::vector<BatchScan>& all, const BatchParams& para
           QJsonObject h;
           h.insert("hole", int(k + 1));
           const ValidationRecord& v = r.choice.validation;
-          h.insert("kind", r.choice.problem.empty() ? QString::fromStdString(r.kind) : "coarse");
-          if (v.chosen >= 0) {
-            h.insert("choice", QString::fromStdString(v.candidates[size_t(v.chosen)]));
+          const FillKind kind = r.choice.problem.empty() ? r.kind : FillKind::kCoarse;
+          h.insert("kind", FillKindName(kind));
+          if (v.HasChoice()) {
+            h.insert("choice", QString::fromStdString(TriedFillName(v.Chosen())));
             QJsonObject errors;
             for (size_t c = 0; c < v.candidates.size(); ++c)
-              errors.insert(QString::fromStdString(v.candidates[c]), v.errors[c]);
+              errors.insert(QString::fromStdString(TriedFillName(v.candidates[c])), v.errors[c]);
             h.insert("validation", errors);
           }
           holes.append(h);

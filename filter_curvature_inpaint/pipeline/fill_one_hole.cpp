@@ -43,7 +43,7 @@ void CheckMatchesFolder(const std::string& json_path, const HoleImage& hi) {
 
 /// Appends one variation: an image to deform the patch to, or with a `surface` (unit box) a
 /// patch the hole takes as it is.
-void AddVariation(HoleVariations& hv, QImage image, const std::string& kind,
+void AddVariation(HoleVariations& hv, QImage image, FillKind kind,
                   std::vector<Eigen::Vector3d> surface = {}) {
   hv.variations.push_back(std::move(image));
   hv.choice.kinds.push_back(kind);
@@ -66,7 +66,7 @@ std::string ListVariations(const HoleChoice& c) {
     size_t end = j + 1;
     while (end < c.kinds.size() && c.kinds[end] == c.kinds[j]) ++end;
     list += (list.empty() ? "" : ", ") + std::to_string(j + 1) +
-            (end > j + 1 ? "-" + std::to_string(end) : "") + " " + c.kinds[j];
+            (end > j + 1 ? "-" + std::to_string(end) : "") + " " + FillKindName(c.kinds[j]);
     j = end;
   }
   return list.empty() ? "none" : list;
@@ -111,8 +111,8 @@ void InpaintFromBackend(const HoleImage& hi, const HoleContext& ctx, bool every_
   if (ctx.validation.vf && ValidatesOnFakeHoles(params)) {
     const auto v = Clock::now();
     hv.choice.validation = ValidateHole(hi, params, *ctx.inpaint, ctx.validation, work);
-    if (hv.choice.validation.chosen_amplitude >= 0)
-      hv.detail = hv.choice.validation.chosen_amplitude;
+    const ValidationRecord& record = hv.choice.validation;
+    if (record.HasChoice() && record.Chosen().amplitude >= 0) hv.detail = record.Chosen().amplitude;
     hv.seconds.validation = Since(v);
   }
   const InpaintParams at_scale = AtHoleScale(*ctx.inpaint, hv);
@@ -120,7 +120,7 @@ void InpaintFromBackend(const HoleImage& hi, const HoleContext& ctx, bool every_
   for (const FillCandidate* c : enabled) {
     if (!c->IsVariation() || !c->Applies(work)) continue;
     StopIfAsked(ctx.validation);
-    const std::string kind = FillKindName(c->KindAt(work));
+    const FillKind kind = c->KindAt(work);
     const int listed = c->VariationCount(site);
     if (!every_variation && listed >= 0 && !AutomaticPickCanTake(hv.choice, kind)) {
       for (int j = 0; j < listed; ++j) AddVariation(hv, QImage(), kind);
@@ -142,7 +142,7 @@ bool InpaintFromFolder(const HoleImage& hi, size_t k, const HoleFillParams& para
     hv.choice.problem = "no " + base + "_inpainted.png; it keeps its coarse fill";
     return false;
   }
-  AddVariation(hv, KnownPixelsKept(done, hv.image, hv.mask), FillKindName(FillKind::kContinuation));
+  AddVariation(hv, KnownPixelsKept(done, hv.image, hv.mask), FillKind::kContinuation);
   return true;
 }
 
@@ -155,8 +155,7 @@ bool InpaintFromOracle(const HoleImage& hi, const GroundTruthOracle& oracle, Hol
     return false;
   }
   hv.truth_spread = truth.spread;
-  AddVariation(hv, KnownPixelsKept(truth.image, hv.image, hv.mask),
-               FillKindName(FillKind::kContinuation));
+  AddVariation(hv, KnownPixelsKept(truth.image, hv.image, hv.mask), FillKind::kContinuation);
   return true;
 }
 
@@ -234,7 +233,7 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleContext& ctx
   }
   const bool listed = k < params.hole_picks.size();
   const int pick = listed ? params.hole_picks[k] : params.pick;
-  const std::string pick_kind = listed ? std::string() : params.pick_kind;
+  const FillKind pick_kind = listed ? FillKind::kCoarse : params.pick_kind;
   if (pick < 0) {
     hv.choice.problem = "asked to keep its coarse fill";
     return hv;
@@ -244,7 +243,7 @@ HoleVariations InpaintHole(const HoleImage& hi, size_t k, const HoleContext& ctx
   // context (a crease or a curved face nearby) and fake holes cut there could only bend it.
   // Asked for by kind or number, a variation is still made.
   const bool automatic =
-      pick == 0 && pick_kind.empty() && !params.oracle && params.inpainted_dir.empty();
+      pick == 0 && pick_kind == FillKind::kCoarse && !params.oracle && params.inpainted_dir.empty();
   if (automatic && coarse.holes[size_t(hi.hole)].planar_cap) {
     hv.choice.problem = "a flat cap in its plane; it keeps its coarse fill";
     return hv;
@@ -329,13 +328,13 @@ void InpaintAgain(HoleVariations& hole, const InpaintParams& params) {
   // New variations from the seeded candidates (the continuations, and the exemplars where the
   // hole had them); the priors' variations, which no seed changes, stay after them.
   const PatchWork none;
-  auto seeded = [&none](const std::string& kind) {
+  auto seeded = [&none](FillKind kind) {
     for (const FillCandidate* c : FillCandidates())
-      if (c->Seeded() && kind == FillKindName(c->KindAt(none))) return true;
+      if (c->Seeded() && kind == c->KindAt(none)) return true;
     return false;
   };
   HoleVariations kept;
-  const std::vector<std::string> had = hole.choice.kinds;
+  const std::vector<FillKind> had = hole.choice.kinds;
   for (size_t j = 0; j < hole.variations.size(); ++j)
     if (!seeded(had[j]))
       AddVariation(kept, std::move(hole.variations[j]), had[j],
@@ -346,17 +345,16 @@ void InpaintAgain(HoleVariations& hole, const InpaintParams& params) {
   hole.surfaces.clear();
   for (const FillCandidate* c : FillCandidates()) {
     const FillKind kind = c->KindAt(none);
-    const std::string name = FillKindName(kind);
     if (c->Seeded() &&
-        (kind == FillKind::kContinuation || std::find(had.begin(), had.end(), name) != had.end()))
+        (kind == FillKind::kContinuation || std::find(had.begin(), had.end(), kind) != had.end()))
       for (CandidateVariation& v : c->Variations(site, none))
-        AddVariation(hole, std::move(v.image), name, std::move(v.surface));
+        AddVariation(hole, std::move(v.image), kind, std::move(v.surface));
   }
   for (size_t j = 0; j < kept.variations.size(); ++j)
     AddVariation(hole, std::move(kept.variations[j]), kept.choice.kinds[j],
                  std::move(kept.surfaces[j]));
   hole.seconds.inpaint = Since(t);
-  PickVariation(hole, 0, std::string());
+  PickVariation(hole, 0, FillKind::kCoarse);
 }
 
 } // namespace curvature_inpaint

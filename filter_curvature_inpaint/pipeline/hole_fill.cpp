@@ -405,7 +405,7 @@ void SaveVariationImages(const std::vector<HoleVariations>& holes, const std::st
 std::vector<VariationRun> VariationRuns(const HoleVariations& hv) {
   std::vector<VariationRun> runs;
   for (size_t j = 0; j < hv.variations.size(); ++j) {
-    const std::string& kind = hv.choice.kinds[j];
+    const FillKind kind = hv.choice.kinds[j];
     if (!runs.empty() && runs.back().kind == kind &&
         hv.variations[size_t(runs.back().first)] == hv.variations[j]) {
       runs.back().last = int(j);

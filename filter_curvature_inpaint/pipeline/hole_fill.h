@@ -73,9 +73,10 @@ struct HoleFillParams {
   DeformationMode mode = DeformationMode::kDirect;
   /// -1: every hole keeps its coarse fill; 0: the best score; k >= 1: variation k of every hole
   int pick = 0;
-  /// Non-empty: the first variation of this kind ("creases", ...) of every hole that has one,
-  /// the automatic pick elsewhere (benchmarks: what a prior does where it applies).
-  std::string pick_kind;
+  /// The first variation of this kind of every hole that has one, the automatic pick
+  /// elsewhere (benchmarks: what a prior does where it applies). kCoarse: no kind asked (the
+  /// coarse fill is `pick` -1).
+  FillKind pick_kind = FillKind::kCoarse;
   /// Per hole, by the holes' numbers (those of `preview` and the report), instead of `pick` and
   /// `pick_kind`: 0 the automatic pick, -1 the coarse fill, k >= 1 variation k. Empty, or one
   /// entry per hole (FillHoles throws std::invalid_argument otherwise).
@@ -127,8 +128,8 @@ struct HoleFillReport {
   int new_vertices = 0;
   HoleChoice choice;
   /// The kind of the variation its patch took (also where the deformation then failed and the
-  /// hole kept its coarse fill); empty where it never got that far.
-  std::string kind;
+  /// hole kept its coarse fill); kCoarse where it never got that far.
+  FillKind kind = FillKind::kCoarse;
   DeformationRecord deformation;
   int crease_flips = 0; ///< fill edges flipped onto the fill's creases
   StageSeconds seconds;
@@ -149,7 +150,7 @@ struct HoleVariations {
   /// Per variation: empty where the patch is deformed to the image's curvature, else the
   /// patch (unit box) the hole takes as it is ("symmetry surface").
   std::vector<std::vector<Eigen::Vector3d>> surfaces;
-  HoleChoice choice;              ///< pick 0 also where "coarse" validated best
+  HoleChoice choice;              ///< pick 0 also where the coarse fill validated best
   GroundTruthSpread truth_spread; ///< with the oracle: the ground truth's and its image's
   double detail_scale = 0;        ///< the fill's vertex spacing in the image, pixels
   double detail = 0;      ///< embedded: the amplitude the variations have (validated, or given)
@@ -174,7 +175,7 @@ void CheckHoleFillParams(const HoleFillParams& params);
 /// which the montage and the dialog show once.
 struct VariationRun {
   int first = 0, last = 0; ///< 0-based
-  std::string kind;
+  FillKind kind = FillKind::kContinuation;
 };
 std::vector<VariationRun> VariationRuns(const HoleVariations& hole);
 

@@ -3,6 +3,8 @@
 // (HoleVariations) and the fill's report (HoleFillReport) embed the same records.
 #pragma once
 
+#include "candidates/fill_kind.h"
+
 #include <string>
 #include <vector>
 
@@ -11,9 +13,9 @@ namespace curvature_inpaint {
 /// Stage 8b's evidence: each candidate's error on fake holes cut near the hole, and the one
 /// chosen.
 struct ValidationRecord {
-  std::vector<std::string> candidates; ///< validated ways to fill it; empty: not validated
-  std::vector<double> errors;          ///< per candidate: RMS over the fake holes / radius
-  std::vector<double> detail; ///< per candidate: detail ratio where it broke a tie, else -1
+  std::vector<TriedFill> candidates; ///< validated ways to fill it; empty: not validated
+  std::vector<double> errors;        ///< per candidate: RMS over the fake holes / radius
+  std::vector<double> detail;        ///< per candidate: detail ratio where it broke a tie, else -1
   /// Per fake hole (those at the mirror place last): each candidate's RMS / radius there.
   std::vector<std::vector<double>> per_fake_hole;
   int chosen = -1; ///< index into candidates
@@ -23,12 +25,14 @@ struct ValidationRecord {
   /// No fake hole could be cut or filled near the hole: with no evidence it keeps the smooth
   /// fill (`note` says why).
   bool no_evidence = false;
-  /// The embedded inpainter's detail amplitude of the chosen candidate; -1 where it is
-  /// another kind of fill.
-  double chosen_amplitude = -1;
   int fake_holes = 0;
   int mirror_fake_holes = 0; ///< of those, cut at the hole's mirror place
   std::string note;          ///< why there are fewer fake holes, or none
+
+  /// Whether a candidate was chosen (`chosen` indexes `candidates`).
+  bool HasChoice() const { return chosen >= 0 && size_t(chosen) < candidates.size(); }
+  /// The candidate chosen. \pre HasChoice().
+  const TriedFill& Chosen() const { return candidates[size_t(chosen)]; }
 };
 
 /// What the priors found for a hole: why it has no such variation (empty if it has one), and
@@ -45,19 +49,17 @@ struct PriorNotes {
 
 /// The pick among a hole's variations and why.
 struct HoleChoice {
-  /// Per variation: "continuation", "exemplar", "symmetry", "symmetry surface", "creases",
-  /// "face" or "tri-laplacian".
-  std::vector<std::string> kinds;
-  std::vector<double> scores; ///< per variation: ScoreVariation, higher is better
-  int pick = 0;               ///< 1-based; 0: the hole keeps its coarse fill
-  bool asked = false;         ///< the pick was asked for (a number or a kind), not automatic
-  std::string pick_note;      ///< why the kind asked for was not picked; empty if it was
-  std::string problem;        ///< why the hole kept its coarse fill; empty if it did not
+  std::vector<FillKind> kinds; ///< per variation (never kCoarse)
+  std::vector<double> scores;  ///< per variation: ScoreVariation, higher is better
+  int pick = 0;                ///< 1-based; 0: the hole keeps its coarse fill
+  bool asked = false;          ///< the pick was asked for (a number or a kind), not automatic
+  std::string pick_note;       ///< why the kind asked for was not picked; empty if it was
+  std::string problem;         ///< why the hole kept its coarse fill; empty if it did not
   ValidationRecord validation;
   PriorNotes priors;
 
-  /// The kind of the variation picked; empty where the hole keeps its coarse fill.
-  const std::string& PickedKind() const;
+  /// The kind of the variation picked; kCoarse where the hole keeps its coarse fill.
+  FillKind PickedKind() const;
 };
 
 /// Wall time per stage for one hole, seconds. `validation` is the fake holes' (stage 8b),

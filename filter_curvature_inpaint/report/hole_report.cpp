@@ -13,7 +13,8 @@
 namespace curvature_inpaint {
 
 std::string DescribeValidation(const ValidationRecord& v) {
-  const std::vector<std::string>& candidates = v.candidates;
+  std::vector<std::string> candidates;
+  for (const TriedFill& c : v.candidates) candidates.push_back(TriedFillName(c));
   const std::vector<double>& errors = v.errors;
   const int choice = v.chosen, fake_holes = v.fake_holes;
   if (candidates.empty()) return v.note.empty() ? "not validated" : v.note;
@@ -45,7 +46,8 @@ std::vector<std::string> DescribeVariations(const std::vector<HoleVariations>& h
     }
     std::string line = hole + "variations";
     for (size_t j = 0; j < hv.variations.size(); ++j)
-      line += (j ? ", " : " ") + std::to_string(j + 1) + " " + c.kinds[j] + " (score " +
+      line += (j ? ", " : " ") + std::to_string(j + 1) + " " + FillKindName(c.kinds[j]) +
+              " (score " +
               QString::number(j < c.scores.size() ? c.scores[j] : 0, 'g', 4).toStdString() + ")";
     line += c.pick > 0 ? "; fill picks " + std::to_string(c.pick)
                        : std::string("; fill keeps the coarse fill");
@@ -73,7 +75,8 @@ std::vector<std::string> DescribeHoleFill(const HoleFillResult& result) {
       for (double s : c.scores) // "-": a variation listed, not made
         scores += (scores.empty() ? "" : " ") +
                   (std::isfinite(s) ? QString::number(s, 'g', 4).toStdString() : "-");
-      const std::string kind = r.kind == "continuation" ? "" : " " + r.kind;
+      const std::string kind =
+          r.kind == FillKind::kContinuation ? "" : std::string(" ") + FillKindName(r.kind);
       std::snprintf(
           buf, sizeof buf,
           "inpaint %zu: %d edges, variation %d%s of %zu (scores %s), %d deformation steps, "
@@ -141,14 +144,15 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
       << ", \"scores\": [";
     for (size_t j = 0; j < c.scores.size(); ++j) o << (j ? ", " : "") << JsonNumber{c.scores[j]};
     o << "], \"kinds\": [";
-    for (size_t j = 0; j < c.kinds.size(); ++j) o << (j ? ", " : "") << JsonQuoted(c.kinds[j]);
+    for (size_t j = 0; j < c.kinds.size(); ++j)
+      o << (j ? ", " : "") << JsonQuoted(FillKindName(c.kinds[j]));
     o << "]";
     if (!v.candidates.empty()) {
       o << ", \"validation\": {\"fake_holes\": " << v.fake_holes
         << ", \"at_mirror_place\": " << v.mirror_fake_holes
         << ", \"tie\": " << JsonNumber{params.validation.tie} << ", \"candidates\": [";
       for (size_t i = 0; i < v.candidates.size(); ++i)
-        o << (i ? ", " : "") << "{\"name\": " << JsonQuoted(v.candidates[i])
+        o << (i ? ", " : "") << "{\"name\": " << JsonQuoted(TriedFillName(v.candidates[i]))
           << ", \"error\": " << JsonNumber{v.errors[i]}
           << ", \"detail_ratio\": " << JsonNumber{v.detail[i]} << "}";
       o << "], \"per_fake_hole\": [";
@@ -158,16 +162,17 @@ std::string HoleFillReportJson(const HoleFillResult& result, const HoleFillParam
           o << (i ? ", " : "") << JsonNumber{v.per_fake_hole[f][i]};
         o << "]";
       }
-      o << "], \"choice\": " << JsonQuoted(v.candidates[size_t(v.chosen)]);
+      o << "], \"choice\": " << JsonQuoted(TriedFillName(v.Chosen()));
       if (v.not_clear >= 0)
-        o << ", \"not_clearly_better\": " << JsonQuoted(v.candidates[size_t(v.not_clear)]);
+        o << ", \"not_clearly_better\": "
+          << JsonQuoted(TriedFillName(v.candidates[size_t(v.not_clear)]));
       if (!v.note.empty()) o << ", \"note\": " << JsonQuoted(v.note);
       o << "}";
     } else if (!v.note.empty()) {
       o << ", \"validation\": {\"note\": " << JsonQuoted(v.note) << "}";
     }
     o << ", \"pick\": " << c.pick;
-    if (!r.kind.empty()) o << ", \"kind\": " << JsonQuoted(r.kind);
+    if (r.kind != FillKind::kCoarse) o << ", \"kind\": " << JsonQuoted(FillKindName(r.kind));
     o << ", \"crease_flips\": " << r.crease_flips;
     o << ", \"iterations\": " << r.deformation.iterations
       << ", \"backoffs\": " << r.deformation.backoffs

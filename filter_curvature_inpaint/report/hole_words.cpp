@@ -8,9 +8,10 @@ namespace curvature_inpaint {
 namespace {
 
 /// The index of the smooth fill among the candidates, or -1.
-int SmoothIndex(const std::vector<std::string>& candidates) {
-  const auto it = std::find(candidates.begin(), candidates.end(), "coarse");
-  return it == candidates.end() ? -1 : int(it - candidates.begin());
+int SmoothIndex(const std::vector<TriedFill>& candidates) {
+  for (size_t c = 0; c < candidates.size(); ++c)
+    if (candidates[c].kind == FillKind::kCoarse) return int(c);
+  return -1;
 }
 
 /// A problem without its trailing "; it keeps its coarse fill" (the sentence says so already).
@@ -26,19 +27,33 @@ std::string Reason(std::string problem) {
 
 } // namespace
 
-std::string KindInWords(const std::string& kind) {
-  if (kind == "coarse") return "the smooth fill";
-  if (kind == "continuation") return "the inpainted curvature";
-  if (kind == "detail 0") return "the inpainted curvature, smooth";
-  if (kind.compare(0, 7, "detail ") == 0)
-    return "the inpainted curvature with detail " + kind.substr(7);
-  if (kind == "exemplar") return "patches of the scan's own curvature";
-  if (kind == "tri-laplacian") return "the surrounding curvature continued";
-  if (kind == "symmetry") return "the curvature of the mirror image";
-  if (kind == "symmetry surface") return "the mirror image of the other side";
-  if (kind == "creases") return "the creases extended across it";
-  if (kind == "face") return "the face around it extended";
-  return kind;
+std::string KindInWords(FillKind kind) {
+  switch (kind) {
+  case FillKind::kCoarse:
+    return "the smooth fill";
+  case FillKind::kContinuation:
+    return "the inpainted curvature";
+  case FillKind::kExemplar:
+    return "patches of the scan's own curvature";
+  case FillKind::kTriLaplacian:
+    return "the surrounding curvature continued";
+  case FillKind::kSymmetry:
+    return "the curvature of the mirror image";
+  case FillKind::kSymmetrySurface:
+    return "the mirror image of the other side";
+  case FillKind::kCreases:
+    return "the creases extended across it";
+  case FillKind::kFace:
+    return "the face around it extended";
+  }
+  return FillKindName(kind);
+}
+
+std::string TriedFillInWords(const TriedFill& fill) {
+  if (fill.amplitude < 0) return KindInWords(fill.kind);
+  if (fill.amplitude == 0) return KindInWords(fill.kind) + ", smooth";
+  // "detail 0.5" as the report names it: the same digits.
+  return KindInWords(fill.kind) + " with " + TriedFillName(fill);
 }
 
 std::string TestCutsInWords(const ValidationRecord& v, size_t c) {
@@ -71,14 +86,14 @@ std::string TestCutsInWords(const ValidationRecord& v, size_t c) {
 
 std::string ChoiceInWords(const HoleChoice& f) {
   const ValidationRecord& v = f.validation;
-  const bool validated = v.chosen >= 0 && size_t(v.chosen) < v.candidates.size();
+  const bool validated = v.HasChoice();
   if (!f.problem.empty() || f.pick <= 0) {
     const std::string note = f.pick_note.empty() ? "" : " (" + f.pick_note + ")";
     if (validated && v.not_clear >= 0 && size_t(v.not_clear) < v.candidates.size() && f.pick <= 0)
       return "kept the smooth fill: no clear winner (" +
-             KindInWords(v.candidates[size_t(v.not_clear)]) + " did best, " +
+             TriedFillInWords(v.candidates[size_t(v.not_clear)]) + " did best, " +
              TestCutsInWords(v, size_t(v.not_clear)) + ")" + note;
-    if (validated && v.candidates[size_t(v.chosen)] == "coarse" && f.pick <= 0)
+    if (validated && v.Chosen().kind == FillKind::kCoarse && f.pick <= 0)
       return "kept the smooth fill, " + TestCutsInWords(v, size_t(v.chosen)) + note;
     return "kept the smooth fill" + (f.problem.empty() ? note : ": " + Reason(f.problem));
   }
@@ -88,7 +103,7 @@ std::string ChoiceInWords(const HoleChoice& f) {
   if (validated) {
     // The continuations are validated as detail amplitudes; the picked one is the chosen one.
     why = TestCutsInWords(v, size_t(v.chosen));
-    if (f.PickedKind() == "continuation") what = KindInWords(v.candidates[size_t(v.chosen)]);
+    if (f.PickedKind() == FillKind::kContinuation) what = TriedFillInWords(v.Chosen());
   } else {
     why = "the best-scored of its variations";
   }

@@ -11,9 +11,12 @@
 
 namespace curvature_inpaint {
 
-/// A variation's or a validation candidate's kind ("symmetry surface", "detail 0.5", "coarse")
-/// in words ("the mirror image of the other side").
-std::string KindInWords(const std::string& kind);
+/// A kind of fill in words (kSymmetrySurface: "the mirror image of the other side").
+std::string KindInWords(FillKind kind);
+
+/// A way the validation tried in words: its kind's, or for an amplitude of the continuation
+/// "the inpainted curvature with detail 0.5".
+std::string TriedFillInWords(const TriedFill& fill);
 
 /// How candidate `c` did on the test cuts against the smooth fill: "better than the smooth
 /// fill on 3 of 4 test cuts" (for the smooth fill itself: "best on 3 of 4 test cuts"); empty

@@ -40,7 +40,8 @@ std::vector<Tile> VariationTiles(const HoleVariations& hv) {
     const int first = run.first + 1, last = run.last + 1;
     const std::string numbers =
         first == last ? std::to_string(first) : std::to_string(first) + "-" + std::to_string(last);
-    tiles.push_back({hv.variations[size_t(run.first)], numbers + " " + run.kind, first, last});
+    tiles.push_back(
+        {hv.variations[size_t(run.first)], numbers + " " + FillKindName(run.kind), first, last});
   }
   return tiles;
 }

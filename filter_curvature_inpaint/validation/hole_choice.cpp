@@ -9,9 +9,8 @@
 
 namespace curvature_inpaint {
 
-const std::string& HoleChoice::PickedKind() const {
-  static const std::string none;
-  return pick > 0 && size_t(pick) <= kinds.size() ? kinds[size_t(pick - 1)] : none;
+FillKind HoleChoice::PickedKind() const {
+  return pick > 0 && size_t(pick) <= kinds.size() ? kinds[size_t(pick - 1)] : FillKind::kCoarse;
 }
 
 double ScoreVariation(const QImage& variation, const QImage& mask) {
@@ -69,47 +68,44 @@ bool ClearlyBetter(const std::vector<std::vector<double>>& per_fake_hole, size_t
 
 bool CoarseValidatedBest(const HoleChoice& choice) {
   const ValidationRecord& v = choice.validation;
-  return v.chosen >= 0 && size_t(v.chosen) < v.candidates.size() &&
-         v.candidates[size_t(v.chosen)] == "coarse";
+  return v.HasChoice() && v.Chosen().kind == FillKind::kCoarse;
 }
 
 namespace {
 
-/// The kind of variation the validation chose where it chose one ("tri-laplacian",
-/// "symmetry", ...); empty where it chose an amplitude of the inpainter ("detail 0.5"), the
-/// coarse fill, or nothing.
-std::string ValidatedKind(const ValidationRecord& v) {
-  if (v.chosen < 0 || size_t(v.chosen) >= v.candidates.size()) return "";
-  const std::string& chosen = v.candidates[size_t(v.chosen)];
-  const std::vector<std::string> kinds = VariationKindNames();
-  return std::find(kinds.begin(), kinds.end(), chosen) != kinds.end() ? chosen : "";
+/// The kind of variation the pick takes: the prior the validation chose where it chose one
+/// (the tri-Laplacian fill, the mirror image, ...), else (an amplitude of the inpainter, the
+/// coarse fill, or nothing validated) the continuation.
+FillKind ValidatedKind(const ValidationRecord& v) {
+  const bool prior = v.HasChoice() && v.Chosen().kind != FillKind::kCoarse &&
+                     v.Chosen().kind != FillKind::kContinuation;
+  return prior ? v.Chosen().kind : FillKind::kContinuation;
 }
 
 } // namespace
 
 int AutomaticPick(const HoleChoice& choice) {
   if (CoarseValidatedBest(choice) || choice.validation.no_evidence) return 0;
-  const std::string validated = ValidatedKind(choice.validation);
-  for (size_t j = 0; j < choice.kinds.size() && !validated.empty(); ++j)
+  const FillKind validated = ValidatedKind(choice.validation);
+  for (size_t j = 0; j < choice.kinds.size() && validated != FillKind::kContinuation; ++j)
     if (choice.kinds[j] == validated) return int(j) + 1;
   // A prior's variation is chosen only where it validated best: nothing is forced on a hole.
   int best = 0;
   for (size_t j = 0; j < choice.kinds.size() && j < choice.scores.size(); ++j)
-    if (choice.kinds[j] == FillKindName(FillKind::kContinuation) &&
+    if (choice.kinds[j] == FillKind::kContinuation &&
         (best == 0 || choice.scores[j] > choice.scores[size_t(best - 1)]))
       best = int(j) + 1;
   return best > 0 || choice.kinds.empty() ? best : 1;
 }
 
-bool AutomaticPickCanTake(const HoleChoice& choice, const std::string& kind) {
+bool AutomaticPickCanTake(const HoleChoice& choice, FillKind kind) {
   if (CoarseValidatedBest(choice) || choice.validation.no_evidence) return false;
   // The validated prior's variation; where an amplitude of the embedded inpainter validated
   // best, or nothing was validated, the best-scored continuation.
-  const std::string validated = ValidatedKind(choice.validation);
-  return kind == (validated.empty() ? FillKindName(FillKind::kContinuation) : validated);
+  return kind == ValidatedKind(choice.validation);
 }
 
-void PickVariation(HoleVariations& hole, int pick, const std::string& pick_kind) {
+void PickVariation(HoleVariations& hole, int pick, FillKind pick_kind) {
   HoleChoice& c = hole.choice;
   c.scores.clear();
   const std::vector<QImage>& v = hole.variations;
@@ -121,8 +117,8 @@ void PickVariation(HoleVariations& hole, int pick, const std::string& pick_kind)
     else
       c.scores.push_back(ScoreVariation(v[j], hole.mask));
   c.pick = pick > 0 ? std::min(pick, int(hole.variations.size())) : AutomaticPick(c);
-  if (!pick_kind.empty()) {
-    c.pick_note = "it has no " + pick_kind + " variation";
+  if (pick_kind != FillKind::kCoarse) {
+    c.pick_note = std::string("it has no ") + FillKindName(pick_kind) + " variation";
     for (size_t j = 0; j < c.kinds.size(); ++j)
       if (c.kinds[j] == pick_kind) {
         c.pick = int(j) + 1;
@@ -130,7 +126,7 @@ void PickVariation(HoleVariations& hole, int pick, const std::string& pick_kind)
         break;
       }
   }
-  c.asked = pick > 0 || (!pick_kind.empty() && c.pick_note.empty());
+  c.asked = pick > 0 || (pick_kind != FillKind::kCoarse && c.pick_note.empty());
 }
 
 } // namespace curvature_inpaint

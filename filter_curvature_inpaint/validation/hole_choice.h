@@ -74,15 +74,16 @@ bool CoarseValidatedBest(const HoleChoice& choice);
 /// else the best-scored continuation.
 int AutomaticPick(const HoleChoice& choice);
 
-/// Whether the automatic pick can take a variation of kind `kind` (a FillKindName) of a hole
+/// Whether the automatic pick can take a variation of kind `kind` of a hole
 /// whose validation, where it ran, is in `choice`: none where it keeps the smooth fill, the
 /// validated prior's where it chose a prior, else a continuation. A fill makes only those.
-bool AutomaticPickCanTake(const HoleChoice& choice, const std::string& kind);
+bool AutomaticPickCanTake(const HoleChoice& choice, FillKind kind);
 
 /// Scores every variation of `hole` and picks: variation `pick` (1-based) where given, else the
-/// first of kind `pick_kind` where given and the hole has one (a note says so where not),
+/// first of kind `pick_kind` where given (not kCoarse) and the hole has one (a note says so
+/// where not),
 /// else the automatic pick. A variation listed but not made (a null image) scores NaN.
 /// \pre pick <= the number of variations; the variation picked is made.
-void PickVariation(HoleVariations& hole, int pick, const std::string& pick_kind);
+void PickVariation(HoleVariations& hole, int pick, FillKind pick_kind);
 
 } // namespace curvature_inpaint

@@ -33,15 +33,13 @@ double RingCurvature(const HoleImage& h) {
 /// One candidate of the validation: a way to fill, at one of its amplitudes where it has them.
 struct ValidationCandidate {
   const FillCandidate* fill = nullptr;
-  FillKind kind = FillKind::kCoarse;
-  std::string name;     ///< as the report, the log and the dialog list it
+  TriedFill tried;      ///< its kind and amplitude, as the record keeps them
   size_t amplitude = 0; ///< index into its ValidatedAmplitudes
-  double detail = -1;   ///< that amplitude; -1: it has none
 };
 
 /// The candidates of a hole, in the order of the report: each way to fill that these
 /// parameters turn on and the hole itself has (`hole`: its shared work), the continuation once
-/// per detail amplitude ("detail 0.5").
+/// per detail amplitude.
 std::vector<ValidationCandidate> ValidationCandidates(const HoleFillParams& params,
                                                       const PatchWork& hole) {
   std::vector<ValidationCandidate> c;
@@ -49,10 +47,8 @@ std::vector<ValidationCandidate> ValidationCandidates(const HoleFillParams& para
     if (!fill->Enabled(params) || !fill->Applies(hole)) continue;
     const std::vector<double> amplitudes = fill->ValidatedAmplitudes(params);
     const FillKind kind = fill->KindAt(hole);
-    if (amplitudes.empty()) c.push_back({fill, kind, FillKindName(kind)});
-    for (size_t i = 0; i < amplitudes.size(); ++i)
-      c.push_back({fill, kind, "detail " + QString::number(amplitudes[i], 'g', 3).toStdString(), i,
-                   amplitudes[i]});
+    if (amplitudes.empty()) c.push_back({fill, {kind, -1}, 0});
+    for (size_t i = 0; i < amplitudes.size(); ++i) c.push_back({fill, {kind, amplitudes[i]}, i});
   }
   return c;
 }
@@ -198,7 +194,7 @@ size_t ChooseCandidate(const std::vector<double>& error, const std::vector<FakeH
 /// not one.
 size_t SmoothFillIndex(const std::vector<ValidationCandidate>& candidates) {
   for (size_t c = 0; c < candidates.size(); ++c)
-    if (candidates[c].kind == FillKind::kCoarse) return c;
+    if (candidates[c].tried.kind == FillKind::kCoarse) return c;
   return candidates.size();
 }
 
@@ -243,7 +239,7 @@ ValidationRecord ValidateHole(const HoleImage& hi, const HoleFillParams& params,
   const ValidationParams& vp = params.validation;
   const std::vector<ValidationCandidate> candidates = ValidationCandidates(params, hole);
   ValidationRecord record;
-  for (const ValidationCandidate& c : candidates) record.candidates.push_back(c.name);
+  for (const ValidationCandidate& c : candidates) record.candidates.push_back(c.tried);
   FakeHoleParams fp;
   fp.count = vp.fake_holes;
   fp.seed = params.inpaint.seed;
@@ -295,7 +291,6 @@ ValidationRecord ValidateHole(const HoleImage& hi, const HoleFillParams& params,
   record.errors = error;
   record.detail = detail;
   record.chosen = int(choice);
-  record.chosen_amplitude = candidates[choice].detail;
   if (!why.empty()) record.note = why;
   return record;
 }
