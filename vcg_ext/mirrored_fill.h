@@ -122,6 +122,76 @@ inline RigidMotion Kabsch(const std::vector<Eigen::Vector3d>& from,
   return m;
 }
 
+/// The point of the known surface at `y`, on the tangent planes of the `neighbours` known
+/// points nearest it (smooth between points, unlike the points themselves); false where the
+/// nearest lies more than `gap` off y along its normal or `beside` off it across.
+inline bool KnownSurfaceAt(const KnownSurface& known, int neighbours, double gap, double beside,
+                           const Eigen::Vector3d& y, Eigen::Vector3d& at) {
+  const auto& surface = known.index->Points();
+  const auto& normals = *known.normals;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  double weights = 0;
+  int used = 0;
+  for (int j : known.index->NearestK(y, 2 * neighbours)) {
+    const Eigen::Vector3d& v = surface[size_t(j)];
+    if (known.excluded_radius > 0 && (v - known.excluded_centre).norm() < known.excluded_radius)
+      continue;
+    const double d2 = (v - y).squaredNorm();
+    const Eigen::Vector3d& nv = normals[size_t(j)];
+    const double along = (y - v).dot(nv);
+    if (used == 0 && (std::abs(along) > gap || d2 - along * along > beside * beside)) break;
+    const double w = 1 / (d2 + 1e-12);
+    sum += w * (y - (y - v).dot(nv) * nv);
+    weights += w;
+    if (++used == neighbours) break;
+  }
+  if (weights <= 0) return false;
+  at = sum / weights;
+  return true;
+}
+
+/// The two halves of a real object differ by more than noise (a limb posed differently, a
+/// head turned a little): the reflection alone puts the ring beside its counterpart, and
+/// the image read there is the counterpart's shape shifted. A rigid motion after the
+/// reflection, found by iterative closest points on the ring (each round registers the
+/// ring's images onto their feet on the known surface, `on_surface`), moves it towards the
+/// counterpart. The feet lie along the normals, so each round slides only part of the way
+/// along the surface: the rounds are few enough to stop short of a full registration, which
+/// slides onto neighbouring features more often than it helps. `reflected`: the patch's
+/// points reflected; the ring is where `free` is 0.
+template <class OnSurface>
+RigidMotion RegisterReflection(const std::vector<Eigen::Vector3d>& reflected,
+                               const std::vector<char>& free, const OnSurface& on_surface,
+                               const MirroredFillParams& params, double radius) {
+  const size_t n = reflected.size();
+  Eigen::Matrix3d motion = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d shift = Eigen::Vector3d::Zero();
+  for (int round = 0; round < params.registration_rounds; ++round) {
+    std::vector<Eigen::Vector3d> from, to;
+    for (size_t i = 0; i < n; ++i) {
+      Eigen::Vector3d at;
+      if (free[i]) continue;
+      const Eigen::Vector3d y = motion * reflected[i] + shift;
+      if (on_surface(y, at)) from.push_back(y), to.push_back(at);
+    }
+    if (from.size() < 10) break;
+    const RigidMotion step = Kabsch(from, to);
+    const Eigen::Matrix3d next_motion = step.rotation * motion;
+    const Eigen::Vector3d next_shift = step.rotation * shift + step.translation;
+    // The motion's largest displacement of the ring, kept within bounds: beyond them it has
+    // slid onto another part.
+    double farthest = 0;
+    for (size_t i = 0; i < n; ++i)
+      if (!free[i])
+        farthest =
+            std::max(farthest, (next_motion * reflected[i] + next_shift - reflected[i]).norm());
+    if (farthest > params.max_registration * radius) break;
+    motion = next_motion, shift = next_shift;
+    if (step.translation.norm() < 1e-4 * radius) break;
+  }
+  return {motion, shift};
+}
+
 } // namespace detail
 
 /// The mirrored fill of a hole's patch (`points`, `triangles`; `free` marks the fill's
@@ -137,33 +207,11 @@ inline MirroredFill MirrorFill(const std::vector<Eigen::Vector3d>& points,
                                const MirroredFillParams& params) {
   MirroredFill out;
   const size_t n = points.size();
-  const auto& surface = known.index->Points();
-  const auto& normals = *known.normals;
   std::vector<Eigen::Vector3d> image(n);
   std::vector<char> has_image(n, 0);
   const double gap = params.max_gap * radius, beside = params.max_beside * radius;
-  // The point of the known surface at `y` (on the tangent planes of the known points nearest
-  // it: smooth between points, unlike the points themselves), where there is one.
   auto on_surface = [&](const Eigen::Vector3d& y, Eigen::Vector3d& at) {
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    double weights = 0;
-    int used = 0;
-    for (int j : known.index->NearestK(y, 2 * params.neighbours)) {
-      const Eigen::Vector3d& v = surface[size_t(j)];
-      if (known.excluded_radius > 0 && (v - known.excluded_centre).norm() < known.excluded_radius)
-        continue;
-      const double d2 = (v - y).squaredNorm();
-      const Eigen::Vector3d& nv = normals[size_t(j)];
-      const double along = (y - v).dot(nv);
-      if (used == 0 && (std::abs(along) > gap || d2 - along * along > beside * beside)) break;
-      const double w = 1 / (d2 + 1e-12);
-      sum += w * (y - (y - v).dot(nv) * nv);
-      weights += w;
-      if (++used == params.neighbours) break;
-    }
-    if (weights <= 0) return false;
-    at = sum / weights;
-    return true;
+    return detail::KnownSurfaceAt(known, params.neighbours, gap, beside, y, at);
   };
   // The two halves of a real object differ by more than noise (a limb posed differently, a
   // head turned a little): the reflection alone puts the ring beside its counterpart, and
@@ -175,32 +223,11 @@ inline MirroredFill MirrorFill(const std::vector<Eigen::Vector3d>& points,
   // neighbouring features more often than it helps.
   std::vector<Eigen::Vector3d> reflected(n);
   for (size_t i = 0; i < n; ++i) reflected[i] = plane.Reflect(points[i]);
-  Eigen::Matrix3d motion = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d shift = Eigen::Vector3d::Zero();
+  const detail::RigidMotion after =
+      detail::RegisterReflection(reflected, free, on_surface, params, radius);
+  const Eigen::Matrix3d& motion = after.rotation;
+  const Eigen::Vector3d& shift = after.translation;
   auto mirrored = [&](size_t i) { return Eigen::Vector3d(motion * reflected[i] + shift); };
-  for (int round = 0; round < params.registration_rounds; ++round) {
-    std::vector<Eigen::Vector3d> from, to;
-    for (size_t i = 0; i < n; ++i) {
-      Eigen::Vector3d at;
-      if (free[i]) continue;
-      const Eigen::Vector3d y = mirrored(i);
-      if (on_surface(y, at)) from.push_back(y), to.push_back(at);
-    }
-    if (from.size() < 10) break;
-    const detail::RigidMotion step = detail::Kabsch(from, to);
-    const Eigen::Matrix3d next_motion = step.rotation * motion;
-    const Eigen::Vector3d next_shift = step.rotation * shift + step.translation;
-    // The motion's largest displacement of the ring, kept within bounds: beyond them it has
-    // slid onto another part.
-    double farthest = 0;
-    for (size_t i = 0; i < n; ++i)
-      if (!free[i])
-        farthest =
-            std::max(farthest, (next_motion * reflected[i] + next_shift - reflected[i]).norm());
-    if (farthest > params.max_registration * radius) break;
-    motion = next_motion, shift = next_shift;
-    if (step.translation.norm() < 1e-4 * radius) break;
-  }
   for (size_t i = 0; i < n; ++i) {
     Eigen::Vector3d at;
     if (!on_surface(mirrored(i), at)) continue;

@@ -116,6 +116,37 @@ QString Caption(const HoleVariations& hv, const VariationRun& g, bool automatic)
   return caption;
 }
 
+/// A list item for a run of variations (`best`: the automatic pick, 0-based): its picture, its
+/// caption, the variations it stands for, and for a mirror image how far to trust it.
+QListWidgetItem* VariationItem(const HoleVariations& hv, const VariationRun& group, int best) {
+  // The same picture when selected: the selection shows as the frame and the bold label,
+  // not as a tint that would make the variation look different.
+  const QImage& image = hv.variations[size_t(group.first)];
+  QIcon icon;
+  icon.addPixmap(Thumbnail(image), QIcon::Normal);
+  icon.addPixmap(Thumbnail(image), QIcon::Selected);
+  const bool automatic = group.first <= best && best <= group.last;
+  auto* item = new QListWidgetItem(icon, Caption(hv, group, automatic));
+  item->setData(Qt::UserRole, QString(FillKindName(group.kind)));
+  item->setData(kFirstVariation, group.first);
+  item->setData(kLastVariation, group.last);
+  // How far to trust a mirror image: how much of the fill it covers and how far the two
+  // halves differ around the hole.
+  const bool mirrored =
+      group.kind == FillKind::kSymmetry || group.kind == FillKind::kSymmetrySurface;
+  if (mirrored && hv.choice.priors.mirror_covered >= 0)
+    item->setToolTip(QString("From the object's mirror image, which covers %1 % of the fill; "
+                             "around the hole the two halves differ by %2 % of its radius.")
+                         .arg(std::lround(100 * hv.choice.priors.mirror_covered))
+                         .arg(100 * hv.choice.priors.mirror_ring_residual, 0, 'f', 1));
+  if (automatic) {
+    QFont f = item->font();
+    f.setBold(true);
+    item->setFont(f);
+  }
+  return item;
+}
+
 /// The list row that shows variation `j` (0-based).
 int RowOf(const QListWidget* list, int j) {
   for (int row = 0; row < list->count(); ++row)
@@ -133,6 +164,30 @@ HoleFillDialog::HoleFillDialog(const CMeshO& mesh, QWidget* parent)
   setObjectName("curvatureInpaintDialog");
   resize(1000, 940);
   auto* form = new QFormLayout;
+  QPushButton* reset = AddServiceRows(form);
+  AddChoiceRows(form);
+  AddHoleSelectionRows(form);
+  auto* settings = new QGroupBox("Settings");
+  auto* settings_column = new QVBoxLayout(settings);
+  settings_column->addLayout(form);
+  AddAdvancedSettings(settings_column);
+  status_ = new QLabel;
+  status_->setObjectName("status");
+  auto* layout = new QVBoxLayout(this);
+  layout->addWidget(settings);
+  layout->addLayout(MakeButtons());
+  layout->addWidget(status_);
+  layout->addWidget(MakeHoleList(), 1);
+
+  LoadSettings();
+  connect(backend_, &QComboBox::currentTextChanged, this, &HoleFillDialog::BackendChanged);
+  connect(reset, &QPushButton::clicked, this, &HoleFillDialog::ResetPrompts);
+  connect(inpaint_, &QPushButton::clicked, this, &HoleFillDialog::Inpaint);
+  connect(cancel_, &QPushButton::clicked, this, &HoleFillDialog::CancelOrClose);
+  connect(apply_, &QPushButton::clicked, this, &QDialog::accept);
+}
+
+QPushButton* HoleFillDialog::AddServiceRows(QFormLayout* form) {
 
   backend_ = new QComboBox;
   backend_->setObjectName("backend");
@@ -164,7 +219,10 @@ HoleFillDialog::HoleFillDialog(const CMeshO& mesh, QWidget* parent)
   reset->setObjectName("resetPrompts");
   reset->setToolTip("The backend's default prompt, URL and model.");
   form->addRow("", reset);
+  return reset;
+}
 
+void HoleFillDialog::AddChoiceRows(QFormLayout* form) {
   variations_ = new QSpinBox;
   variations_->setObjectName("variations");
   variations_->setRange(1, 10);
@@ -221,6 +279,9 @@ HoleFillDialog::HoleFillDialog(const CMeshO& mesh, QWidget* parent)
                              "only its tangents, chosen automatically where the fake holes "
                              "validate it.");
   form->addRow("Tri-&Laplacian", tri_laplacian_);
+}
+
+void HoleFillDialog::AddAdvancedSettings(QVBoxLayout* column) {
   // The settings few people need, folded away: each with a line that says what it does.
   auto* advanced_form = new QFormLayout;
   auto add_advanced = [advanced_form](const QString& label, QWidget* field, const QString& line) {
@@ -276,6 +337,11 @@ HoleFillDialog::HoleFillDialog(const CMeshO& mesh, QWidget* parent)
     advanced->setVisible(open);
     advanced_toggle->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
   });
+  column->addWidget(advanced_toggle);
+  column->addWidget(advanced);
+}
+
+void HoleFillDialog::AddHoleSelectionRows(QFormLayout* form) {
   max_hole_edges_ = new QSpinBox;
   max_hole_edges_->setObjectName("maxHoleEdges");
   max_hole_edges_->setRange(0, 1000000);
@@ -288,7 +354,9 @@ HoleFillDialog::HoleFillDialog(const CMeshO& mesh, QWidget* parent)
   selected_only_ = new QCheckBox("only holes beside selected faces");
   selected_only_->setObjectName("selectedOnly");
   form->addRow("Selection", selected_only_);
+}
 
+QHBoxLayout* HoleFillDialog::MakeButtons() {
   inpaint_ = new QPushButton("&Inpaint");
   inpaint_->setObjectName("inpaint");
   inpaint_->setToolTip("Fill coarsely, paint the curvature images and inpaint them (the mesh "
@@ -304,14 +372,15 @@ HoleFillDialog::HoleFillDialog(const CMeshO& mesh, QWidget* parent)
   progress_->setObjectName("progress");
   progress_->setRange(0, 100);
   progress_->setValue(0);
-  status_ = new QLabel;
-  status_->setObjectName("status");
   auto* buttons = new QHBoxLayout;
   buttons->addWidget(inpaint_);
   buttons->addWidget(progress_, 1);
   buttons->addWidget(apply_);
   buttons->addWidget(cancel_);
+  return buttons;
+}
 
+QScrollArea* HoleFillDialog::MakeHoleList() {
   auto* holes = new QWidget;
   holes_layout_ = new QVBoxLayout(holes);
   holes_layout_->addStretch(1);
@@ -319,24 +388,7 @@ HoleFillDialog::HoleFillDialog(const CMeshO& mesh, QWidget* parent)
   scroll->setWidget(holes);
   scroll->setWidgetResizable(true);
   scroll->setMinimumSize(4 * (kThumbnail + 24) + 2 * kThumbnail, kThumbnail + 120);
-
-  auto* settings = new QGroupBox("Settings");
-  auto* settings_column = new QVBoxLayout(settings);
-  settings_column->addLayout(form);
-  settings_column->addWidget(advanced_toggle);
-  settings_column->addWidget(advanced);
-  auto* layout = new QVBoxLayout(this);
-  layout->addWidget(settings);
-  layout->addLayout(buttons);
-  layout->addWidget(status_);
-  layout->addWidget(scroll, 1);
-
-  LoadSettings();
-  connect(backend_, &QComboBox::currentTextChanged, this, &HoleFillDialog::BackendChanged);
-  connect(reset, &QPushButton::clicked, this, &HoleFillDialog::ResetPrompts);
-  connect(inpaint_, &QPushButton::clicked, this, &HoleFillDialog::Inpaint);
-  connect(cancel_, &QPushButton::clicked, this, &HoleFillDialog::CancelOrClose);
-  connect(apply_, &QPushButton::clicked, this, &QDialog::accept);
+  return scroll;
 }
 
 HoleFillDialog::~HoleFillDialog() {
@@ -562,6 +614,38 @@ void HoleFillDialog::done(int result) {
   QDialog::done(result);
 }
 
+QVBoxLayout* HoleFillDialog::HoleControls(size_t k, QListWidget* list, bool coarse_chosen) {
+  auto* side = new QVBoxLayout;
+  auto* reroll = new QPushButton("Re-roll");
+  reroll->setObjectName(QString("reroll_%1").arg(k + 1));
+  reroll->setToolTip("Ask the backend for new variations of this hole.");
+  connect(reroll, &QPushButton::clicked, this, [this, k] { ReRoll(int(k)); });
+  auto* skip = new QCheckBox(coarse_chosen ? "Skip (auto)" : "Skip");
+  skip->setObjectName(QString("skip_%1").arg(k + 1));
+  skip->setToolTip("Leave this hole with its smooth coarse fill.");
+  skip->setChecked(holes_[k].choice.pick == 0);
+  // Choosing a variation undoes a skip (also the automatic one); skipping clears the choice.
+  connect(list, &QListWidget::currentRowChanged, this, [this, k, skip, list](int row) {
+    if (row < 0) return;
+    holes_[k].choice.pick = list->item(row)->data(kFirstVariation).toInt() + 1;
+    skip->setChecked(false);
+  });
+  connect(skip, &QCheckBox::toggled, this, [this, k, list](bool on) {
+    if (on) {
+      holes_[k].choice.pick = 0;
+      list->setCurrentRow(-1);
+    } else if (holes_[k].choice.pick == 0) {
+      list->setCurrentRow(std::max(0, list->currentRow()));
+      if (list->currentItem())
+        holes_[k].choice.pick = list->currentItem()->data(kFirstVariation).toInt() + 1;
+    }
+  });
+  side->addWidget(reroll);
+  side->addWidget(skip);
+  side->addStretch(1);
+  return side;
+}
+
 void HoleFillDialog::ShowHoles() {
   while (holes_layout_->count() > 1) {
     QLayoutItem* item = holes_layout_->takeAt(0);
@@ -618,32 +702,7 @@ void HoleFillDialog::ShowHoles() {
     const int best = AutomaticPick(choice) - 1;
     const bool coarse_chosen = best < 0;
     for (const VariationRun& group : VariationRuns(hv)) {
-      // The same picture when selected: the selection shows as the frame and the bold label,
-      // not as a tint that would make the variation look different.
-      const QImage& image = hv.variations[size_t(group.first)];
-      QIcon icon;
-      icon.addPixmap(Thumbnail(image), QIcon::Normal);
-      icon.addPixmap(Thumbnail(image), QIcon::Selected);
-      const bool automatic = group.first <= best && best <= group.last;
-      auto* item = new QListWidgetItem(icon, Caption(hv, group, automatic));
-      item->setData(Qt::UserRole, QString(FillKindName(group.kind)));
-      item->setData(kFirstVariation, group.first);
-      item->setData(kLastVariation, group.last);
-      // How far to trust a mirror image: how much of the fill it covers and how far the two
-      // halves differ around the hole.
-      const bool mirrored =
-          group.kind == FillKind::kSymmetry || group.kind == FillKind::kSymmetrySurface;
-      if (mirrored && choice.priors.mirror_covered >= 0)
-        item->setToolTip(QString("From the object's mirror image, which covers %1 % of the fill; "
-                                 "around the hole the two halves differ by %2 % of its radius.")
-                             .arg(std::lround(100 * choice.priors.mirror_covered))
-                             .arg(100 * choice.priors.mirror_ring_residual, 0, 'f', 1));
-      if (automatic) {
-        QFont f = item->font();
-        f.setBold(true);
-        item->setFont(f);
-      }
-      list->addItem(item);
+      list->addItem(VariationItem(hv, group, best));
     }
     if (choice.pick > 0) list->setCurrentRow(RowOf(list, choice.pick - 1));
     connect(list, &QListWidget::itemDoubleClicked, this, [this, k](QListWidgetItem* item) {
@@ -658,34 +717,7 @@ void HoleFillDialog::ShowHoles() {
       big.exec();
     });
     row->addWidget(list, 1);
-    auto* side = new QVBoxLayout;
-    auto* reroll = new QPushButton("Re-roll");
-    reroll->setObjectName(QString("reroll_%1").arg(k + 1));
-    reroll->setToolTip("Ask the backend for new variations of this hole.");
-    connect(reroll, &QPushButton::clicked, this, [this, k] { ReRoll(int(k)); });
-    auto* skip = new QCheckBox(coarse_chosen ? "Skip (auto)" : "Skip");
-    skip->setObjectName(QString("skip_%1").arg(k + 1));
-    skip->setToolTip("Leave this hole with its smooth coarse fill.");
-    skip->setChecked(choice.pick == 0);
-    // Choosing a variation undoes a skip (also the automatic one); skipping clears the choice.
-    connect(list, &QListWidget::currentRowChanged, this, [this, k, skip, list](int row) {
-      if (row < 0) return;
-      holes_[k].choice.pick = list->item(row)->data(kFirstVariation).toInt() + 1;
-      skip->setChecked(false);
-    });
-    connect(skip, &QCheckBox::toggled, this, [this, k, list](bool on) {
-      if (on) {
-        holes_[k].choice.pick = 0;
-        list->setCurrentRow(-1);
-      } else if (holes_[k].choice.pick == 0) {
-        list->setCurrentRow(std::max(0, list->currentRow()));
-        if (list->currentItem())
-          holes_[k].choice.pick = list->currentItem()->data(kFirstVariation).toInt() + 1;
-      }
-    });
-    side->addWidget(reroll);
-    side->addWidget(skip);
-    side->addStretch(1);
+    QVBoxLayout* side = HoleControls(k, list, coarse_chosen);
     row->addLayout(side);
     holes_layout_->insertWidget(holes_layout_->count() - 1, box);
     lists_.push_back(list);

@@ -18,11 +18,14 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QFormLayout;
+class QHBoxLayout;
 class QLabel;
 class QLineEdit;
 class QListWidget;
 class QProgressBar;
 class QPushButton;
+class QScrollArea;
 class QSpinBox;
 class QThread;
 class QVBoxLayout;
@@ -66,12 +69,28 @@ protected:
   void done(int result) override; ///< keeps the settings, whether applied or cancelled
 
 private:
+  // The dialog's parts, built once by the constructor.
+  /// The backend, its address, model, key status and prompts; returns the prompts' reset button.
+  QPushButton* AddServiceRows(QFormLayout* form);
+  /// Variations, fake holes, detail and the priors: what a hole's choice is made among.
+  void AddChoiceRows(QFormLayout* form);
+  /// The settings few people need, folded away under a toggle.
+  void AddAdvancedSettings(QVBoxLayout* column);
+  /// Which holes are filled.
+  void AddHoleSelectionRows(QFormLayout* form);
+  /// Inpaint, the progress bar, Apply and Cancel.
+  QHBoxLayout* MakeButtons();
+  /// The holes' variations, filled in by ShowHoles.
+  QScrollArea* MakeHoleList();
+
   void BackendChanged();
   void LoadSettings();
   void SaveSettings() const;
   /// Runs `work` in a worker thread, then `done` on the GUI thread if it succeeded.
   void RunWorker(std::function<void()> work, std::function<void()> done, const QString& what);
   void ShowHoles();
+  /// Hole k's Re-roll and Skip (`list`: its variations; `coarse_chosen`: Skip is automatic).
+  QVBoxLayout* HoleControls(size_t k, QListWidget* list, bool coarse_chosen);
   void SetBusy(bool busy);
 
   const CMeshO& mesh_;

@@ -215,6 +215,86 @@ private:
 /// element and property is skipped. vcglib's PLY reader reads a polygon's corners before it
 /// checks them (a heap overflow on a malformed file), so the product reads PLY itself.
 /// Returns the vcglib mask of what the file holds. Throws MeshIoError.
+/// A PLY vertex or triangle as read, before the mesh is built.
+struct PlyVertex {
+  Point3m p, n;
+  vcg::Color4b c = vcg::Color4b(vcg::Color4b::White);
+  float q = 0;
+};
+struct PlyTriangle {
+  std::array<int, 3> v;
+  vcg::Color4b c = vcg::Color4b(vcg::Color4b::White);
+  bool selected = false;
+};
+
+/// What a property is for, decided once per element rather than once per value.
+enum class PlyKind { kSkip, kPosition, kNormal, kColor, kQuality, kCorners, kFlags };
+struct PlyUse {
+  PlyKind kind;
+  int channel; ///< x/y/z or r/g/b/a
+};
+
+PlyUse UseOf(const PlyProperty& prop, bool is_vertex, bool is_face) {
+  const std::string& n = prop.name;
+  const int rgba = n == "red" ? 0 : n == "green" ? 1 : n == "blue" ? 2 : n == "alpha" ? 3 : -1;
+  if (prop.list)
+    return {is_face && (n == "vertex_indices" || n == "vertex_index") ? PlyKind::kCorners
+                                                                      : PlyKind::kSkip,
+            0};
+  if (is_vertex && (n == "x" || n == "y" || n == "z")) return {PlyKind::kPosition, n[0] - 'x'};
+  if (is_vertex && (n == "nx" || n == "ny" || n == "nz")) return {PlyKind::kNormal, n[1] - 'x'};
+  if ((is_vertex || is_face) && rgba >= 0) return {PlyKind::kColor, rgba};
+  if (is_vertex && n == "quality") return {PlyKind::kQuality, 0};
+  if (is_face && n == "flags") return {PlyKind::kFlags, 0};
+  return {PlyKind::kSkip, 0};
+}
+
+/// The attribute a used property adds to the mesh (MeshLab's mask bits).
+int MaskOf(const PlyUse& use, bool is_vertex) {
+  using Mask = vcg::tri::io::Mask;
+  switch (use.kind) {
+  case PlyKind::kNormal:
+    return Mask::IOM_VERTNORMAL;
+  case PlyKind::kColor:
+    return is_vertex ? Mask::IOM_VERTCOLOR : Mask::IOM_FACECOLOR;
+  case PlyKind::kQuality:
+    return Mask::IOM_VERTQUALITY;
+  case PlyKind::kFlags:
+    return Mask::IOM_FACEFLAGS;
+  default:
+    return 0;
+  }
+}
+
+/// A colour channel of 0-255 from an integer property, or from a float one of 0-1.
+unsigned char ColorChannel(const PlyProperty& prop, double v) {
+  const double c = prop.is_float ? 255 * v : v;
+  return (unsigned char)std::lround(std::max(0.0, std::min(255.0, c == c ? c : 0.0)));
+}
+
+/// `m` made of what was read, with the attributes `mask` names.
+void BuildMesh(const std::vector<PlyVertex>& vertices, const std::vector<PlyTriangle>& triangles,
+               int mask, CMeshO& m) {
+  using Mask = vcg::tri::io::Mask;
+  m.Clear();
+  if (mask & Mask::IOM_FACECOLOR) m.face.EnableColor();
+  auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, vertices.size());
+  for (const PlyVertex& v : vertices) {
+    vi->P() = v.p;
+    vi->N() = v.n;
+    vi->C() = v.c;
+    vi->Q() = v.q;
+    ++vi;
+  }
+  auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, triangles.size());
+  for (const PlyTriangle& t : triangles) {
+    for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[t.v[k]];
+    if (mask & Mask::IOM_FACECOLOR) fi->C() = t.c;
+    if (t.selected) fi->SetS();
+    ++fi;
+  }
+}
+
 int ReadPly(const std::string& path, const std::string& data, CMeshO& m) {
   using Mask = vcg::tri::io::Mask;
   auto fail = [&](const std::string& why) {
@@ -237,42 +317,10 @@ int ReadPly(const std::string& path, const std::string& data, CMeshO& m) {
       fail("the " + element + " " + std::to_string(row) + " has no valid list length");
     return int(n);
   };
-  auto color = [](const PlyProperty& prop, double v) {
-    const double c = prop.is_float ? 255 * v : v;
-    return (unsigned char)std::lround(std::max(0.0, std::min(255.0, c == c ? c : 0.0)));
-  };
 
   int mask = Mask::IOM_VERTCOORD | Mask::IOM_FACEINDEX;
-  struct Vertex {
-    Point3m p, n;
-    vcg::Color4b c = vcg::Color4b(vcg::Color4b::White);
-    float q = 0;
-  };
-  struct Triangle {
-    std::array<int, 3> v;
-    vcg::Color4b c = vcg::Color4b(vcg::Color4b::White);
-    bool selected = false;
-  };
-  std::vector<Vertex> vertices;
-  std::vector<Triangle> triangles;
-  // What each property is for, decided once per element rather than once per value.
-  enum Kind { kSkip, kPosition, kNormal, kColor, kQuality, kCorners, kFlags };
-  struct Use {
-    Kind kind;
-    int channel; ///< x/y/z or r/g/b/a
-  };
-  auto use_of = [](const PlyProperty& prop, bool is_vertex, bool is_face) -> Use {
-    const std::string& n = prop.name;
-    const int rgba = n == "red" ? 0 : n == "green" ? 1 : n == "blue" ? 2 : n == "alpha" ? 3 : -1;
-    if (prop.list)
-      return {is_face && (n == "vertex_indices" || n == "vertex_index") ? kCorners : kSkip, 0};
-    if (is_vertex && (n == "x" || n == "y" || n == "z")) return {kPosition, n[0] - 'x'};
-    if (is_vertex && (n == "nx" || n == "ny" || n == "nz")) return {kNormal, n[1] - 'x'};
-    if ((is_vertex || is_face) && rgba >= 0) return {kColor, rgba};
-    if (is_vertex && n == "quality") return {kQuality, 0};
-    if (is_face && n == "flags") return {kFlags, 0};
-    return {kSkip, 0};
-  };
+  std::vector<PlyVertex> vertices;
+  std::vector<PlyTriangle> triangles;
   bool have_vertices = false;
   std::vector<int> corners;
   for (const PlyElement& e : header.elements) {
@@ -282,62 +330,46 @@ int ReadPly(const std::string& path, const std::string& data, CMeshO& m) {
       have_vertices = true;
       vertices.resize(size_t(e.count));
     }
-    std::vector<Use> uses;
+    std::vector<PlyUse> uses;
     for (const PlyProperty& prop : e.properties) {
-      uses.push_back(use_of(prop, is_vertex, is_face));
-      if (e.count == 0) continue;
-      switch (uses.back().kind) {
-      case kNormal:
-        mask |= Mask::IOM_VERTNORMAL;
-        break;
-      case kColor:
-        mask |= is_vertex ? Mask::IOM_VERTCOLOR : Mask::IOM_FACECOLOR;
-        break;
-      case kQuality:
-        mask |= Mask::IOM_VERTQUALITY;
-        break;
-      case kFlags:
-        mask |= Mask::IOM_FACEFLAGS;
-        break;
-      default:
-        break;
-      }
+      uses.push_back(UseOf(prop, is_vertex, is_face));
+      if (e.count > 0) mask |= MaskOf(uses.back(), is_vertex);
     }
     for (long long row = 0; row < e.count; ++row) {
-      Triangle face;
+      PlyTriangle face;
       corners.clear();
       for (size_t i = 0; i < e.properties.size(); ++i) {
         const PlyProperty& prop = e.properties[i];
-        const Use use = uses[i];
+        const PlyUse use = uses[i];
         if (prop.list) {
           const int count = read_count(prop, e.name, row);
           for (int k = 0; k < count; ++k) {
             const double v = read(prop, e.name, row);
-            if (use.kind != kCorners) continue;
+            if (use.kind != PlyKind::kCorners) continue;
             if (!(v >= 0 && v < double(vertices.size())) || v != std::floor(v))
               fail("face " + std::to_string(row) + " names a vertex that does not exist");
             corners.push_back(int(v));
           }
-          if (use.kind == kCorners && count < 3)
+          if (use.kind == PlyKind::kCorners && count < 3)
             fail("face " + std::to_string(row) + " has fewer than three corners");
           continue;
         }
         const double v = read(prop, e.name, row);
-        Vertex* vx = is_vertex ? &vertices[size_t(row)] : nullptr;
+        PlyVertex* vx = is_vertex ? &vertices[size_t(row)] : nullptr;
         switch (use.kind) {
-        case kPosition:
+        case PlyKind::kPosition:
           vx->p[use.channel] = Scalarm(v);
           break;
-        case kNormal:
+        case PlyKind::kNormal:
           vx->n[use.channel] = Scalarm(v);
           break;
-        case kColor:
-          (vx ? vx->c : face.c)[use.channel] = color(prop, v);
+        case PlyKind::kColor:
+          (vx ? vx->c : face.c)[use.channel] = ColorChannel(prop, v);
           break;
-        case kQuality:
+        case PlyKind::kQuality:
           vx->q = float(v);
           break;
-        case kFlags:
+        case PlyKind::kFlags:
           face.selected = (int64_t(v) & CFaceO::SELECTED) != 0;
           break;
         default:
@@ -352,23 +384,7 @@ int ReadPly(const std::string& path, const std::string& data, CMeshO& m) {
       }
     }
   }
-  m.Clear();
-  if (mask & Mask::IOM_FACECOLOR) m.face.EnableColor();
-  auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, vertices.size());
-  for (const Vertex& v : vertices) {
-    vi->P() = v.p;
-    vi->N() = v.n;
-    vi->C() = v.c;
-    vi->Q() = v.q;
-    ++vi;
-  }
-  auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, triangles.size());
-  for (const Triangle& t : triangles) {
-    for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[t.v[k]];
-    if (mask & Mask::IOM_FACECOLOR) fi->C() = t.c;
-    if (t.selected) fi->SetS();
-    ++fi;
-  }
+  BuildMesh(vertices, triangles, mask, m);
   return mask;
 }
 

@@ -120,6 +120,83 @@ std::vector<BatchScan> ReadManifest(const std::string& manifest) {
   return scans;
 }
 
+namespace {
+
+/// What an earlier run into `outdir` finished: successful lines whose output is still there
+/// (Key of the scan's SHA-256 and options).
+std::set<std::string> FinishedBefore(const std::string& outdir) {
+  std::set<std::string> finished;
+  for (const QJsonObject& o : ReadResults(outdir))
+    if (o.value("status").toString() == "ok" &&
+        QFileInfo::exists(QString::fromStdString(outdir) + "/" + o.value("output").toString())) {
+      std::vector<std::string> options;
+      for (const auto& v : o.value("options").toArray())
+        options.push_back(v.toString().toStdString());
+      finished.insert(Key(o.value("sha256").toString().toStdString(), options));
+    }
+  return finished;
+}
+
+/// One progress bar line (redrawn in place): scans reported, failed, rate and time left.
+void PrintProgressBar(const BatchSummary& summary, int reported,
+                      std::chrono::steady_clock::time_point start) {
+  const double minutes =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / 60;
+  const double rate = minutes > 0 ? (reported - summary.skipped) / minutes : 0;
+  const int width = 30, filled = summary.scans ? width * reported / summary.scans : width;
+  const double left = rate > 0 ? (summary.scans - reported) / rate : 0;
+  std::fprintf(stderr, "\r[%s%s] %d/%d scans, %d failed, %.1f per minute, %.0f min left ",
+               std::string(size_t(filled), '#').c_str(),
+               std::string(size_t(width - filled), '-').c_str(), reported, summary.scans,
+               summary.failed, rate, left);
+  if (reported == summary.scans) std::fprintf(stderr, "\n");
+}
+
+/// Each hole's line in the results: its kind, and where it was validated the choice and each
+/// candidate's error.
+QJsonArray HolesJson(const HoleFillResult& result) {
+  QJsonArray holes;
+  for (size_t k = 0; k < result.holes.size(); ++k) {
+    const HoleFillReport& r = result.holes[k];
+    QJsonObject h;
+    h.insert("hole", int(k + 1));
+    const ValidationRecord& v = r.choice.validation;
+    const FillKind kind = r.choice.problem.empty() ? r.kind : FillKind::kCoarse;
+    h.insert("kind", FillKindName(kind));
+    if (v.HasChoice()) {
+      h.insert("choice", QString::fromStdString(TriedFillName(v.Chosen())));
+      QJsonObject errors;
+      for (size_t c = 0; c < v.candidates.size(); ++c)
+        errors.insert(QString::fromStdString(TriedFillName(v.candidates[c])), v.errors[c]);
+      h.insert("validation", errors);
+    }
+    holes.append(h);
+  }
+  return holes;
+}
+
+/// Fills the scan read from `input` (its `bytes`, released once loaded) and writes it to
+/// `output` by way of outdir's hidden folder, renamed into place, so that a kill leaves nothing
+/// half-written among the results. Sets the line's status, counts and holes; returns what to
+/// tell the user. Throws what LoadMesh, FillHoles and SaveMesh throw.
+std::string FillScan(const std::string& input, std::string& bytes, const HoleFillParams& p,
+                     const std::string& output, const std::string& outdir, QJsonObject& line) {
+  CMeshO m;
+  const int mask = LoadMesh(input, bytes, m);
+  std::string().swap(bytes);
+  const HoleFillResult result = FillHoles(m, p);
+  SaveMesh(output, m, mask, outdir + "/.partial");
+  const HoleCensus left = CountHoles(m);
+  line.insert("status", "ok");
+  line.insert("holes_filled", result.coarse.FilledCount());
+  line.insert("holes_left", int(left.loop_edges.size()));
+  line.insert("holes", HolesJson(result));
+  return "filled " + std::to_string(result.coarse.FilledCount()) + " hole(s) (" +
+         std::to_string(left.loop_edges.size()) + " left)";
+}
+
+} // namespace
+
 BatchSummary RunBatch(const std::vector<BatchScan>& all, const BatchParams& params,
                       const FillOptionParser& parse) {
   if (params.shards < 1 || params.shard < 0 || params.shard >= params.shards)
@@ -129,17 +206,7 @@ BatchSummary RunBatch(const std::vector<BatchScan>& all, const BatchParams& para
   std::vector<BatchScan> scans;
   for (size_t i = 0; i < all.size(); ++i)
     if (int(i % size_t(params.shards)) == params.shard) scans.push_back(all[i]);
-  // What an earlier run finished: successful lines whose output is still there.
-  std::set<std::string> finished;
-  for (const QJsonObject& o : ReadResults(params.outdir))
-    if (o.value("status").toString() == "ok" &&
-        QFileInfo::exists(QString::fromStdString(params.outdir) + "/" +
-                          o.value("output").toString())) {
-      std::vector<std::string> options;
-      for (const auto& v : o.value("options").toArray())
-        options.push_back(v.toString().toStdString());
-      finished.insert(Key(o.value("sha256").toString().toStdString(), options));
-    }
+  const std::set<std::string> finished = FinishedBefore(params.outdir);
   const std::string results_path = params.outdir + "/" + ResultsName(params);
   std::FILE* results = std::fopen(results_path.c_str(), "a");
   if (!results) throw std::runtime_error("cannot write " + results_path);
@@ -155,21 +222,11 @@ BatchSummary RunBatch(const std::vector<BatchScan>& all, const BatchParams& para
   auto report = [&](const std::string& name, const std::string& what) {
     // Called with `mutex` held.
     ++reported;
-    if (params.progress_bar) {
-      const double minutes =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / 60;
-      const double rate = minutes > 0 ? (reported - summary.skipped) / minutes : 0;
-      const int width = 30, filled = summary.scans ? width * reported / summary.scans : width;
-      const double left = rate > 0 ? (summary.scans - reported) / rate : 0;
-      std::fprintf(stderr, "\r[%s%s] %d/%d scans, %d failed, %.1f per minute, %.0f min left ",
-                   std::string(size_t(filled), '#').c_str(),
-                   std::string(size_t(width - filled), '-').c_str(), reported, summary.scans,
-                   summary.failed, rate, left);
-      if (reported == summary.scans) std::fprintf(stderr, "\n");
-    } else {
+    if (params.progress_bar)
+      PrintProgressBar(summary, reported, start);
+    else
       std::fprintf(stderr, "batch: %d/%d %s: %s\n", reported, summary.scans, name.c_str(),
                    what.c_str());
-    }
   };
   auto work = [&] {
     for (size_t i = next++; i < scans.size(); i = next++) {
@@ -206,37 +263,7 @@ BatchSummary RunBatch(const std::vector<BatchScan>& all, const BatchParams& para
         HoleFillParams p = parse(options);
         if (std::find(options.begin(), options.end(), "--threads") == options.end())
           p.images.coarse.threads = std::max(1, cores / jobs);
-        CMeshO m;
-        const int mask = LoadMesh(scan.input, scan_bytes, m);
-        std::string().swap(scan_bytes);
-        const HoleFillResult result = FillHoles(m, p);
-        // Written in a hidden folder and renamed into place: a kill leaves nothing half-written
-        // among the results.
-        SaveMesh(params.outdir + "/" + name, m, mask, params.outdir + "/.partial");
-        const HoleCensus left = CountHoles(m);
-        QJsonArray holes;
-        for (size_t k = 0; k < result.holes.size(); ++k) {
-          const HoleFillReport& r = result.holes[k];
-          QJsonObject h;
-          h.insert("hole", int(k + 1));
-          const ValidationRecord& v = r.choice.validation;
-          const FillKind kind = r.choice.problem.empty() ? r.kind : FillKind::kCoarse;
-          h.insert("kind", FillKindName(kind));
-          if (v.HasChoice()) {
-            h.insert("choice", QString::fromStdString(TriedFillName(v.Chosen())));
-            QJsonObject errors;
-            for (size_t c = 0; c < v.candidates.size(); ++c)
-              errors.insert(QString::fromStdString(TriedFillName(v.candidates[c])), v.errors[c]);
-            h.insert("validation", errors);
-          }
-          holes.append(h);
-        }
-        line.insert("status", "ok");
-        line.insert("holes_filled", result.coarse.FilledCount());
-        line.insert("holes_left", int(left.loop_edges.size()));
-        line.insert("holes", holes);
-        what = "filled " + std::to_string(result.coarse.FilledCount()) + " hole(s) (" +
-               std::to_string(left.loop_edges.size()) + " left)";
+        what = FillScan(scan.input, scan_bytes, p, params.outdir + "/" + name, params.outdir, line);
       } catch (const std::exception& e) {
         line.insert("status", "failed");
         line.insert("error", QString::fromStdString(e.what()));

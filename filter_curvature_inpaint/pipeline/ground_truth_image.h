@@ -59,6 +59,12 @@ public:
   GroundTruthImage Image(const HoleImage& hi) const;
 
 private:
+  /// The ground truth's faces in hole `hi` (`gt_of`: its patch's vertices in the ground truth),
+  /// from the hole's loop inwards and never across it; empty with a `problem` where it has
+  /// none, or they run on into another hole or without end.
+  std::vector<int> FacesInHole(const HoleImage& hi, const std::vector<int>& gt_of,
+                               std::string* problem) const;
+
   const CMeshO& gt_;
   vcg_ext::UnitBox box_;
   CurvatureImagesParams params_;

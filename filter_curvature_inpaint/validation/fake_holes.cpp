@@ -150,38 +150,29 @@ bool HoleIsShorterThanBorder(const CMeshO& holed, const vcg_ext::HoleLoops& loop
   return distance[longer] > distance[1 - longer];
 }
 
-} // namespace
+/// A loop as a ball: its centroid and the farthest of its vertices.
+struct Ball {
+  Eigen::Vector3d centre;
+  double radius;
+};
 
-std::vector<std::unique_ptr<FakeHole>> CutFakeHoles(const CMeshO& m, const vcg_ext::VertexFaces& vf,
-                                                    const vcg_ext::CoarseFillResult& coarse,
-                                                    int hole, const FakeHoleParams& params,
-                                                    std::string* why) {
-  std::vector<std::unique_ptr<FakeHole>> fakes;
-  const auto& loop = coarse.holes[size_t(hole)].loop;
-  if (loop.empty() || params.count <= 0) return fakes;
-  const ScanPart scan = ScanPartOf(m, coarse);
-  const size_t scan_vertices = scan.vertices, scan_faces = scan.faces;
-  // Every loop as a ball: its centroid and the farthest of its vertices.
-  struct Ball {
-    Eigen::Vector3d centre;
-    double radius;
-  };
-  auto ball_of = [&](const std::vector<int>& l) {
-    Ball b{Eigen::Vector3d::Zero(), 0};
-    for (int v : l) b.centre += ToEigen(m.vert[v].cP());
-    b.centre /= double(l.size());
-    for (int v : l) b.radius = std::max(b.radius, (ToEigen(m.vert[v].cP()) - b.centre).norm());
-    return b;
-  };
-  std::vector<Ball> holes;
-  for (const auto& h : coarse.holes)
-    if (!h.loop.empty()) holes.push_back(ball_of(h.loop));
-  const Ball real = ball_of(loop);
-  const double r = real.radius, piece = params.piece * r;
-  if (!(r > 0)) return fakes;
+Ball BallOf(const CMeshO& m, const std::vector<int>& loop) {
+  Ball b{Eigen::Vector3d::Zero(), 0};
+  for (int v : loop) b.centre += ToEigen(m.vert[v].cP());
+  b.centre /= double(loop.size());
+  for (int v : loop) b.radius = std::max(b.radius, (ToEigen(m.vert[v].cP()) - b.centre).norm());
+  return b;
+}
 
-  // Each mirror place is taken at the scan vertex nearest to it, if one lies within a hole
-  // radius (elsewhere the mirror image of the hole is not on the known surface).
+/// Where fake holes of hole `hole` (`real`, radius r) may be cut, in the order they are tried
+/// (vertex, at a mirror place): the scan vertices outside its piece and within params.farthest
+/// radii, shuffled by the seed; then, at each mirror plane's image of the hole, the scan vertex
+/// nearest to it, if one lies within a hole radius (elsewhere the mirror image of the hole is
+/// not on the known surface).
+std::vector<std::pair<int, bool>> FakeHolePlaces(const CMeshO& m, size_t scan_vertices,
+                                                 const Ball& real, double piece, int hole,
+                                                 const FakeHoleParams& params) {
+  const double r = real.radius;
   std::vector<Eigen::Vector3d> mirror_places;
   for (const auto& plane : params.mirror_planes)
     mirror_places.push_back(plane.Reflect(real.centre));
@@ -200,12 +191,114 @@ std::vector<std::unique_ptr<FakeHole>> CutFakeHoles(const CMeshO& m, const vcg_e
   }
   std::mt19937 rng(params.seed * 1000003u + uint32_t(hole));
   std::shuffle(places.begin(), places.end(), rng);
-  int attempts = 0, near = 0;
-  std::vector<std::pair<int, bool>> tries; // (vertex, at a mirror place)
+  std::vector<std::pair<int, bool>> tries;
   for (int v : places) tries.emplace_back(v, false);
   for (int v : mirror_vertices)
     if (v >= 0) tries.emplace_back(v, true);
-  for (const auto& place : tries) {
+  return tries;
+}
+
+/// The piece around scan vertex v (at p): the scan faces with every corner within `piece` of
+/// p, grown from p. False where an edge of the mesh's border (an open scan's outer border, a
+/// hole left open) lies in it: no place for a fake hole.
+bool GrowPiece(const CMeshO& m, const vcg_ext::VertexFaces& vf, size_t scan_faces, int v,
+               const Eigen::Vector3d& p, double piece, std::vector<int>* faces) {
+  std::vector<int> stack{v};
+  std::unordered_set<int> seen_vertex{v}, taken;
+  bool on_border = false;
+  while (!stack.empty()) {
+    const int u = stack.back();
+    stack.pop_back();
+    vf.ForEach(u, [&](int f) {
+      if (size_t(f) >= scan_faces || !taken.insert(f).second) return;
+      const auto& face = m.face[f];
+      for (int k = 0; k < 3; ++k)
+        if ((ToEigen(face.cP(k)) - p).norm() > piece) return;
+      for (int k = 0; k < 3; ++k) {
+        const int a = int(vcg::tri::Index(m, face.cV(k)));
+        const auto* b = face.cV((k + 1) % 3);
+        int sharing = 0;
+        vf.ForEach(a, [&](int g) {
+          for (int j = 0; j < 3; ++j) sharing += m.face[g].cV(j) == b;
+        });
+        if (sharing < 2) on_border = true;
+      }
+      faces->push_back(f);
+      for (int k = 0; k < 3; ++k) {
+        const int w = int(vcg::tri::Index(m, face.cV(k)));
+        if (seen_vertex.insert(w).second) stack.push_back(w);
+      }
+    });
+  }
+  return !on_border;
+}
+
+/// A fake hole of radius r cut at scan vertex v into the piece `faces`; null where the piece
+/// is not a disk, or the cut would leave a non-manifold edge or not one hole inside its border.
+std::unique_ptr<FakeHole> CutPiece(const CMeshO& m, const std::vector<int>& faces, int v,
+                                   double r) {
+  std::vector<int> order;
+  std::unordered_map<int, int> local;
+  for (int f : faces)
+    for (int k = 0; k < 3; ++k) {
+      const int w = int(vcg::tri::Index(m, m.face[f].cV(k)));
+      if (local.emplace(w, int(order.size())).second) order.push_back(w);
+    }
+  auto made = std::make_unique<FakeHole>();
+  FakeHole& fake = *made;
+  vcg::tri::Allocator<CMeshO>::AddVertices(fake.truth, order.size());
+  for (size_t i = 0; i < order.size(); ++i) fake.truth.vert[i].P() = m.vert[order[i]].cP();
+  vcg::tri::Allocator<CMeshO>::AddFaces(fake.truth, faces.size());
+  for (size_t i = 0; i < faces.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      fake.truth.face[i].V(k) =
+          &fake.truth.vert[local[int(vcg::tri::Index(m, m.face[faces[i]].cV(k)))]];
+  vcg::tri::UpdateBounding<CMeshO>::Box(fake.truth);
+  const HoleCensus piece_census = CountHoles(fake.truth);
+  if (piece_census.loop_edges.size() != 1 || piece_census.non_manifold_edges > 0) return nullptr;
+  CopyMesh(fake.truth, fake.holed);
+  const Point3m centre = m.vert[v].cP();
+  vcg_ext::PunchHole(fake.holed, centre, Scalarm(r));
+  vcg::tri::UpdateBounding<CMeshO>::Box(fake.holed);
+  const vcg_ext::EdgeCensus holed_edges = vcg_ext::CensusEdges(fake.holed);
+  if (holed_edges.non_manifold_edges > 0) return nullptr;
+  const vcg_ext::HoleLoops holed_loops = vcg_ext::FindHoleLoops(fake.holed, holed_edges);
+  if (holed_loops.holes.size() != 2 ||
+      !HoleIsShorterThanBorder(fake.holed, holed_loops, ToEigen(centre)))
+    return nullptr;
+  const vcg_ext::UnitBox box = vcg_ext::ComputeUnitBox(fake.holed);
+  for (const auto& f : fake.truth.face) {
+    bool inside = false;
+    for (int k = 0; k < 3 && !inside; ++k) inside = vcg::Distance(f.cP(k), centre) < Scalarm(r);
+    if (inside) fake.cut.push_back({box.ToUnit(f.cP(0)), box.ToUnit(f.cP(1)), box.ToUnit(f.cP(2))});
+  }
+  for (size_t i = 0; i < fake.truth.vert.size(); ++i)
+    if (vcg::Distance(fake.truth.vert[i].cP(), centre) < Scalarm(r))
+      fake.cut_vertices.push_back(int(i));
+  fake.radius = r * box.scale;
+  fake.centre = ToEigen(centre);
+  return made;
+}
+
+} // namespace
+
+std::vector<std::unique_ptr<FakeHole>> CutFakeHoles(const CMeshO& m, const vcg_ext::VertexFaces& vf,
+                                                    const vcg_ext::CoarseFillResult& coarse,
+                                                    int hole, const FakeHoleParams& params,
+                                                    std::string* why) {
+  std::vector<std::unique_ptr<FakeHole>> fakes;
+  const auto& loop = coarse.holes[size_t(hole)].loop;
+  if (loop.empty() || params.count <= 0) return fakes;
+  const ScanPart scan = ScanPartOf(m, coarse);
+  std::vector<Ball> holes;
+  for (const auto& h : coarse.holes)
+    if (!h.loop.empty()) holes.push_back(BallOf(m, h.loop));
+  const Ball real = BallOf(m, loop);
+  const double r = real.radius, piece = params.piece * r;
+  if (!(r > 0)) return fakes;
+
+  int attempts = 0, near = 0;
+  for (const auto& place : FakeHolePlaces(m, scan.vertices, real, piece, hole, params)) {
     const int v = place.first;
     const bool at_mirror = place.second;
     if (!at_mirror && (near == params.count || attempts == params.max_attempts)) continue;
@@ -218,81 +311,13 @@ std::vector<std::unique_ptr<FakeHole>> CutFakeHoles(const CMeshO& m, const vcg_e
       if (f->at_mirror_place == at_mirror) apart = apart && (p - f->centre).norm() > 2 * piece;
     if (!apart) continue;
     if (!at_mirror) ++attempts;
-    // The piece: the scan faces with every corner within `piece` of p, grown from p.
-    std::vector<int> faces, stack{v};
-    std::unordered_map<int, int> local;
-    std::unordered_set<int> seen_vertex{v}, taken;
-    bool on_border = false;
-    while (!stack.empty()) {
-      const int u = stack.back();
-      stack.pop_back();
-      vf.ForEach(u, [&](int f) {
-        if (size_t(f) >= scan_faces || !taken.insert(f).second) return;
-        const auto& face = m.face[f];
-        for (int k = 0; k < 3; ++k)
-          if ((ToEigen(face.cP(k)) - p).norm() > piece) return;
-        // An edge of the mesh's border (an open scan's outer border, a hole left open) in the
-        // piece: no place for a fake hole.
-        for (int k = 0; k < 3; ++k) {
-          const int a = int(vcg::tri::Index(m, face.cV(k)));
-          const auto* b = face.cV((k + 1) % 3);
-          int sharing = 0;
-          vf.ForEach(a, [&](int g) {
-            for (int j = 0; j < 3; ++j) sharing += m.face[g].cV(j) == b;
-          });
-          if (sharing < 2) on_border = true;
-        }
-        faces.push_back(f);
-        for (int k = 0; k < 3; ++k) {
-          const int w = int(vcg::tri::Index(m, face.cV(k)));
-          if (seen_vertex.insert(w).second) stack.push_back(w);
-        }
-      });
-    }
-    if (on_border || faces.size() < 50) continue;
-    std::vector<int> order;
-    for (int f : faces)
-      for (int k = 0; k < 3; ++k) {
-        const int w = int(vcg::tri::Index(m, m.face[f].cV(k)));
-        if (local.emplace(w, int(order.size())).second) order.push_back(w);
-      }
-    auto made = std::make_unique<FakeHole>();
-    FakeHole& fake = *made;
-    vcg::tri::Allocator<CMeshO>::AddVertices(fake.truth, order.size());
-    for (size_t i = 0; i < order.size(); ++i) fake.truth.vert[i].P() = m.vert[order[i]].cP();
-    vcg::tri::Allocator<CMeshO>::AddFaces(fake.truth, faces.size());
-    for (size_t i = 0; i < faces.size(); ++i)
-      for (int k = 0; k < 3; ++k)
-        fake.truth.face[i].V(k) =
-            &fake.truth.vert[local[int(vcg::tri::Index(m, m.face[faces[i]].cV(k)))]];
-    vcg::tri::UpdateBounding<CMeshO>::Box(fake.truth);
-    const HoleCensus piece_census = CountHoles(fake.truth);
-    if (piece_census.loop_edges.size() != 1 || piece_census.non_manifold_edges > 0) continue;
-    CopyMesh(fake.truth, fake.holed);
-    const Point3m centre = m.vert[v].cP();
-    vcg_ext::PunchHole(fake.holed, centre, Scalarm(r));
-    vcg::tri::UpdateBounding<CMeshO>::Box(fake.holed);
-    const vcg_ext::EdgeCensus holed_edges = vcg_ext::CensusEdges(fake.holed);
-    if (holed_edges.non_manifold_edges > 0) continue;
-    const vcg_ext::HoleLoops holed_loops = vcg_ext::FindHoleLoops(fake.holed, holed_edges);
-    if (holed_loops.holes.size() != 2 ||
-        !HoleIsShorterThanBorder(fake.holed, holed_loops, ToEigen(centre)))
-      continue;
-    const vcg_ext::UnitBox box = vcg_ext::ComputeUnitBox(fake.holed);
-    for (const auto& f : fake.truth.face) {
-      bool inside = false;
-      for (int k = 0; k < 3 && !inside; ++k) inside = vcg::Distance(f.cP(k), centre) < Scalarm(r);
-      if (inside)
-        fake.cut.push_back({box.ToUnit(f.cP(0)), box.ToUnit(f.cP(1)), box.ToUnit(f.cP(2))});
-    }
-    for (size_t i = 0; i < fake.truth.vert.size(); ++i)
-      if (vcg::Distance(fake.truth.vert[i].cP(), centre) < Scalarm(r))
-        fake.cut_vertices.push_back(int(i));
-    fake.radius = r * box.scale;
-    fake.centre = p;
-    fake.at_mirror_place = at_mirror;
+    std::vector<int> faces;
+    if (!GrowPiece(m, vf, scan.faces, v, p, piece, &faces) || faces.size() < 50) continue;
+    std::unique_ptr<FakeHole> fake = CutPiece(m, faces, v, r);
+    if (!fake) continue;
+    fake->at_mirror_place = at_mirror;
     near += !at_mirror;
-    fakes.push_back(std::move(made));
+    fakes.push_back(std::move(fake));
   }
   // A fake hole at the mirror place cannot validate the mirror image (its own is the real
   // hole): alone, it would judge the symmetry prior by the other candidates.
