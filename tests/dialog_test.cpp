@@ -1,7 +1,10 @@
 // The hole-fill dialog with real widgets on Qt's offscreen platform: defaults per backend,
 // persistence, the warning for a missing key, choosing and skipping variations, and cancel
 // during a network call.
+#include "cli/command_line.h"
+#include "filter_table.h"
 #include "hole_fill_dialog.h"
+#include "pipeline/fill_settings.h"
 #include "io/mesh_io.h"
 #include "pipeline/hole_fill.h"
 #include "pipeline/pipeline.h"
@@ -57,6 +60,56 @@ private slots:
   }
 
   void init() { QSettings("curvature-inpaint", "hole-fill").clear(); }
+
+  // Each setting of the hole fill is declared once (pipeline/fill_settings.h): MeshLab's filter
+  // lists it with its help and the default, the dialog shows the same help as a tooltip, the
+  // command line's help has its option with its line, and the range check refuses a value
+  // past its end. A setting added to the table reaches all four, or this fails.
+  void every_setting_reaches_the_filter_the_dialog_the_command_line_and_the_range_check() {
+    using namespace curvature_inpaint;
+    HoleFillDialog d(mesh_);
+    const plugin::FilterSpec& filter = plugin::Filter(plugin::FilterId::kHoleFill);
+    const cli::Command* fill = cli::FindCommand("fill");
+    QVERIFY(fill);
+    const HoleFillParams defaults = DefaultSettings();
+    for (const SettingSpec& s : Settings()) {
+      const std::string help = SettingHelp(s);
+      bool in_filter = false;
+      for (const plugin::ParamSpec& p : filter.params)
+        if (p.name == s.script_name) {
+          in_filter = p.help == help && p.label == s.label;
+          const double value = SettingValue(s.id, defaults);
+          if (p.type == plugin::ParamType::kBool)
+            in_filter = in_filter && p.value.b == (value != 0);
+          if (p.type == plugin::ParamType::kInt || p.type == plugin::ParamType::kEnum)
+            in_filter = in_filter && p.value.i == int(value);
+          if (p.type == plugin::ParamType::kFloat)
+            in_filter = in_filter && p.value.f == float(value);
+        }
+      QVERIFY2(in_filter, s.script_name);
+      bool in_dialog = false;
+      for (QWidget* w : d.findChildren<QWidget*>())
+        in_dialog = in_dialog || w->toolTip() == QString::fromStdString(help);
+      QVERIFY2(in_dialog, s.script_name);
+      bool in_help = false;
+      for (const cli::Option& o : fill->options)
+        in_help = in_help || (o.name == std::string(s.option) && o.help == SettingBrief(s));
+      QVERIFY2(in_help && cli::CommandHelp(*fill).find(s.option) != std::string::npos,
+               s.script_name);
+      if (s.type == SettingType::kBool) continue;
+      HoleFillParams past = defaults;
+      const double end = s.type == SettingType::kChoice ? double(SettingChoices(s.id).size())
+                                                        : s.max + std::max(1.0, std::abs(s.max));
+      SetSetting(s.id, end, past);
+      bool refused = false;
+      try {
+        CheckHoleFillParams(past);
+      } catch (const vcg_ext::InvalidParameterError& e) {
+        refused = std::string(e.what()).find(s.what) != std::string::npos;
+      }
+      QVERIFY2(refused, s.script_name);
+    }
+  }
 
   void expert_settings_are_folded_away_with_a_line_each() {
     HoleFillDialog d(mesh_);

@@ -1,5 +1,7 @@
 #include "command_line.h"
 
+#include "pipeline/fill_settings.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -11,6 +13,13 @@ namespace cli {
 namespace {
 
 using Options = std::vector<Option>;
+
+/// A setting of the hole fill as an option (pipeline/fill_settings.h): its name, placeholder
+/// and line of help with its default.
+Option FromSetting(Setting id) {
+  const SettingSpec& s = SettingOf(id);
+  return {s.option, s.value_name, SettingBrief(s)};
+}
 
 Options Join(std::initializer_list<Options> groups) {
   Options all;
@@ -32,12 +41,11 @@ Options Without(Options options, std::initializer_list<const char*> names) {
 /// Which holes are filled: the same for every command that finds holes, so that they number
 /// the holes alike.
 const Options kHoleSelection{
-    {"--max-hole-edges", "N", "fill only holes of at most N boundary edges (default 0: any size)"},
+    FromSetting(Setting::kMaxHoleSize),
     {"--max-hole-diameter", "F",
      "leave open the holes whose border spans more than F x the bounding-box diagonal"},
-    {"--keep-longest-open", "", "leave the longest border open: the outer border of an open scan"},
-    {"--selected-only", "",
-     "fill only the holes beside selected faces (PLY, as MeshLab saves them)"},
+    FromSetting(Setting::kKeepLongestOpen),
+    FromSetting(Setting::kSelected),
 };
 
 const Options kThreads{{"--threads", "T", "holes filled at once (default: one per core)"}};
@@ -49,8 +57,7 @@ const Options kOutput{
 };
 
 const Options kBackend{
-    {"--backend", "NAME",
-     "the inpainter: embedded (default, offline), openai, sd-webui, stability or comfyui"},
+    FromSetting(Setting::kBackend),
     {"--url", "URL", "the service's address; repeat it for several servers of one service"},
     {"--url-file", "FILE", "the services' addresses, one a line ('#' starts a comment)"},
     {"--per-server", "M", "requests in flight on each server (default 1)"},
@@ -62,33 +69,30 @@ const Options kBackend{
     {"--timeout", "SECONDS", "per request (default 300)"},
     {"--retries", "N", "tries again after a failed request (default 3)"},
     {"--max-response-mb", "MB", "the largest answer a service may send (default 64)"},
-    {"--detail", "A",
-     "embedded: the detail's amplitude (0: smooth); fill then uses it on every hole"},
+    FromSetting(Setting::kDetail),
 };
 
 const Options kFill = Join(
     {kBackend,
      {
-         {"--variations", "N", "curvature images the inpainter completes per hole (default 4)"},
+         FromSetting(Setting::kVariations),
          {"--pick", "WHICH",
           "auto (default: the fill that did clearly best on test cuts near the hole, else the "
           "smooth fill), coarse (the smooth fill), a variation number, a kind (continuation, "
           "exemplar, tri-laplacian, symmetry, symmetry surface, creases, face), or one entry "
           "per hole: A,B,..."},
-         {"--fake-holes", "K",
-          "test cuts per hole that choose its fill (default 4; 0: faster, the image score "
-          "chooses; use it on scans with hundreds of holes)"},
+         FromSetting(Setting::kFakeHoles),
          {"--fake-hole-size", "PX", "the test cuts' images (default 128)"},
-         {"--no-symmetry", "", "never fill a hole from the object's mirror image"},
-         {"--exemplar", "", "also offer patches of the known curvature copied in (embedded)"},
-         {"--no-creases", "", "never extend sharp edges or flat faces across a hole"},
-         {"--no-tri-laplacian", "", "never continue the curvature around a hole smoothly"},
-         {"--mode", "MODE", "the deformation: direct (default) or paper (the paper's loop)"},
-         {"--similitude", "S", "paper mode: colour difference that marks a vertex to move (30)"},
-         {"--transformation-constant", "T", "paper mode: a move per step (0.00005)"},
+         FromSetting(Setting::kSymmetry),
+         FromSetting(Setting::kExemplar),
+         FromSetting(Setting::kCreases),
+         FromSetting(Setting::kTriLaplacian),
+         FromSetting(Setting::kMode),
+         FromSetting(Setting::kSimilitude),
+         FromSetting(Setting::kTransformationConstant),
          {"--curvature-passes", "N", "direct mode: extra rounds towards the image (default 0)"},
          {"--density", "D", "the fill's vertex density (default 2; the coarse fill's 1.41)"},
-         {"--size", "PX", "the curvature images' size (default 512)"},
+         FromSetting(Setting::kImageSize),
          {"--context", "C", "the known ring around a hole, in hole radii (default 1)"},
          {"--images", "DIR", "also write every hole's images and a montage into DIR"},
          {"--from-images", "DIR",

@@ -20,7 +20,7 @@ struct UsageError : std::runtime_error {
 struct Option {
   const char* name;
   const char* value;
-  const char* help;
+  std::string help;
 };
 
 /// One command: how it is called, what it does, and the options it accepts.

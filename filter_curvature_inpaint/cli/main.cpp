@@ -10,6 +10,7 @@
 #include "manual_page.h"
 #include "pipeline/batch.h"
 #include "pipeline/curvature_images.h"
+#include "pipeline/fill_settings.h"
 #include "pipeline/hole_fill.h"
 #include "pipeline/pipeline.h"
 #include "report/hole_report.h"
@@ -248,7 +249,7 @@ void ReadPick(const std::string& pick, curvature_inpaint::HoleFillParams& p) {
 /// The options of `fill` that set its parameters (every one but the files, --report, --oracle
 /// and the output's flags), taken out of `args`.
 curvature_inpaint::HoleFillParams ReadFillOptions(Args& args) {
-  curvature_inpaint::HoleFillParams p;
+  curvature_inpaint::HoleFillParams p = curvature_inpaint::DefaultSettings();
   const bool detail_given = args.Has("--detail");
   ReadBackendOptions(args, p.inpaint);
   p.inpaint.variations = int(args.Integer("--variations", p.inpaint.variations, 1));
@@ -270,7 +271,7 @@ curvature_inpaint::HoleFillParams ReadFillOptions(Args& args) {
       args.Number("--transformation-constant", p.paper.transformation_constant);
   ReadHoleSelection(args, p.images.coarse);
   p.images.coarse.density_alpha = args.Number("--density", p.images.coarse.density_alpha);
-  p.images.image_size = int(args.Integer("--size", 512, 16));
+  p.images.image_size = int(args.Integer("--size", p.images.image_size, 16));
   p.images_dir = args.Text("--images", "");
   p.inpainted_dir = args.Text("--from-images", "");
   p.images.segmentation.context = args.Number("--context", p.images.segmentation.context);

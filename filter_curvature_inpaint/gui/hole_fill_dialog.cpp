@@ -1,6 +1,7 @@
 #include "hole_fill_dialog.h"
 
 #include "pipeline/fill_one_hole.h"
+#include "pipeline/fill_settings.h"
 #include "pipeline/pipeline.h"
 #include "report/hole_report.h"
 
@@ -84,6 +85,18 @@ QString Key(const QString& backend, const char* field) {
 /// The backend the list shows (its items are InpaintBackends(), in order).
 Backend SelectedBackend(const QComboBox& list) {
   return BackendAt(list.currentIndex());
+}
+
+/// A setting's tooltip (pipeline/fill_settings.h), which it returns, and for a number box the
+/// range the setting may take.
+QString Declare(QWidget* field, Setting id) {
+  const SettingSpec& s = SettingOf(id);
+  if (auto* box = qobject_cast<QSpinBox*>(field))
+    box->setRange(int(s.min), int(std::min<double>(s.max, std::numeric_limits<int>::max())));
+  if (auto* box = qobject_cast<QDoubleSpinBox*>(field)) box->setRange(s.min, s.max);
+  const QString help = QString::fromStdString(SettingHelp(s));
+  field->setToolTip(help);
+  return help;
 }
 
 /// Where a list item keeps the variations it stands for (0-based, first and last).
@@ -192,8 +205,7 @@ QPushButton* HoleFillDialog::AddServiceRows(QFormLayout* form) {
   backend_ = new QComboBox;
   backend_->setObjectName("backend");
   for (Backend b : InpaintBackends()) backend_->addItem(QString::fromStdString(BackendName(b)));
-  backend_->setToolTip("Who completes the curvature images: embedded (offline, this computer), "
-                       "OpenAI (DALL-E 2), a Stable Diffusion web UI, Stability AI, or ComfyUI.");
+  Declare(backend_, Setting::kBackend);
   form->addRow("&Backend", backend_);
   url_ = new QLineEdit;
   url_->setObjectName("url");
@@ -225,66 +237,40 @@ QPushButton* HoleFillDialog::AddServiceRows(QFormLayout* form) {
 void HoleFillDialog::AddChoiceRows(QFormLayout* form) {
   variations_ = new QSpinBox;
   variations_->setObjectName("variations");
-  variations_->setRange(1, 10);
-  variations_->setValue(4);
-  variations_->setToolTip("Inpainted variations per hole, to choose from.");
+  Declare(variations_, Setting::kVariations);
   form->addRow("&Variations", variations_);
-  const HoleFillParams defaults;
   fake_holes_ = new QSpinBox;
   fake_holes_->setObjectName("fakeHoles");
-  fake_holes_->setRange(0, 16);
-  fake_holes_->setValue(defaults.validation.fake_holes);
-  fake_holes_->setToolTip("Embedded backend: cut this many holes of each hole's size into the "
-                          "known surface near it, fill them every way (the coarse fill, detail "
-                          "0 to 2, the priors below) and choose for the hole the way that came "
-                          "closest to the surface cut out. 0: every hole gets the detail "
-                          "below.");
+  Declare(fake_holes_, Setting::kFakeHoles);
   form->addRow("&Fake holes per hole", fake_holes_);
   detail_ = new QDoubleSpinBox;
   detail_->setObjectName("detail");
-  detail_->setRange(0, 10);
   detail_->setSingleStep(0.25);
-  detail_->setValue(defaults.inpaint.detail);
-  detail_->setToolTip("Embedded backend, with no fake holes: the amplitude of the synthesised "
-                      "detail, relative to the surroundings' own (0: the smooth continuation).");
+  Declare(detail_, Setting::kDetail);
   form->addRow("&Detail", detail_);
   symmetry_ = new QCheckBox("Offer each hole's mirror image");
   symmetry_->setObjectName("symmetry");
-  symmetry_->setChecked(defaults.symmetry.enabled);
-  symmetry_->setToolTip("Find the object's mirror planes: a hole whose mirror image is known "
-                        "surface gets its mirrored curvature (\"symmetry\") and its mirrored "
-                        "surface (\"symmetry surface\") as variations, chosen automatically "
-                        "where the fake holes validate them.");
+  Declare(symmetry_, Setting::kSymmetry);
   form->addRow("S&ymmetry", symmetry_);
   exemplar_ = new QCheckBox("Offer exemplar variations");
   exemplar_->setObjectName("exemplar");
-  exemplar_->setChecked(defaults.exemplar);
-  exemplar_->setToolTip("Embedded backend: as many more variations copied from patches of the "
-                        "known curvature, ridges and valleys first (\"exemplar\"), chosen "
-                        "automatically where the fake holes validate them.");
+  Declare(exemplar_, Setting::kExemplar);
   form->addRow("E&xemplar", exemplar_);
   creases_ = new QCheckBox("Carry creases across holes");
   creases_->setObjectName("creases");
-  creases_->setChecked(defaults.creases);
-  creases_->setToolTip("A hole that sharp edges run into gets one more variation (\"creases\"): "
-                       "the smooth faces around it extended until they meet; a hole inside "
-                       "one smooth face with no sharp edge near, that face extended "
-                       "(\"face\"). Chosen automatically where the fake holes validate it.");
+  Declare(creases_, Setting::kCreases);
   form->addRow("&Creases", creases_);
   tri_laplacian_ = new QCheckBox("Continue the curvature");
   tri_laplacian_->setObjectName("triLaplacian");
-  tri_laplacian_->setChecked(defaults.tri_laplacian);
-  tri_laplacian_->setToolTip("Each hole gets one more variation (\"tri-laplacian\"): its fill "
-                             "faired to continue the curvature of the surface around it, not "
-                             "only its tangents, chosen automatically where the fake holes "
-                             "validate it.");
+  Declare(tri_laplacian_, Setting::kTriLaplacian);
   form->addRow("Tri-&Laplacian", tri_laplacian_);
 }
 
 void HoleFillDialog::AddAdvancedSettings(QVBoxLayout* column) {
   // The settings few people need, folded away: each with a line that says what it does.
   auto* advanced_form = new QFormLayout;
-  auto add_advanced = [advanced_form](const QString& label, QWidget* field, const QString& line) {
+  auto add_advanced = [advanced_form](const QString& label, QWidget* field, Setting id) {
+    const QString line = Declare(field, id);
     auto* explained = new QWidget;
     auto* column = new QVBoxLayout(explained);
     column->setContentsMargins(0, 0, 0, 0);
@@ -293,35 +279,25 @@ void HoleFillDialog::AddAdvancedSettings(QVBoxLayout* column) {
     note->setWordWrap(true);
     note->setEnabled(false); // greyed: an explanation, not a value
     column->addWidget(note);
-    field->setToolTip(line);
     advanced_form->addRow(label, explained);
   };
   mode_ = new QComboBox;
   mode_->setObjectName("mode");
-  mode_->addItems({"direct", "paper"});
-  add_advanced("M&ode", mode_,
-               "How the fill follows its image: direct solves for the image's curvature at once "
-               "(faster, closer); paper takes the paper's small steps along the normals.");
+  for (const std::string& name : SettingChoices(Setting::kMode))
+    mode_->addItem(QString::fromStdString(name));
+  add_advanced("M&ode", mode_, Setting::kMode);
   similitude_ = new QDoubleSpinBox;
   similitude_->setObjectName("similitude");
-  similitude_->setRange(1, 255);
-  similitude_->setValue(30);
-  add_advanced("&Similitude", similitude_,
-               "Paper mode: a vertex moves while its colour differs from the image's by more "
-               "than this in any channel (of 255; the paper's 30).");
-  transformation_constant_ = new QLineEdit("5e-05");
+  add_advanced("&Similitude", similitude_, Setting::kSimilitude);
+  transformation_constant_ = new QLineEdit;
   transformation_constant_->setObjectName("transformationConstant");
   add_advanced("&Transformation constant", transformation_constant_,
-               "Paper mode: each step along the normal, as a fraction of the mesh's bounding "
-               "box (the paper's 0.00005).");
+               Setting::kTransformationConstant);
   image_size_ = new QSpinBox;
   image_size_->setObjectName("imageSize");
-  image_size_->setRange(64, 2048);
   image_size_->setSingleStep(64);
-  image_size_->setValue(512);
   image_size_->setSuffix(" px");
-  add_advanced("Image si&ze", image_size_,
-               "The curvature images' side: larger keeps finer detail and takes longer.");
+  add_advanced("Image si&ze", image_size_, Setting::kImageSize);
   auto* advanced = new QWidget;
   advanced->setObjectName("advancedSettings");
   advanced->setLayout(advanced_form);
@@ -344,15 +320,16 @@ void HoleFillDialog::AddAdvancedSettings(QVBoxLayout* column) {
 void HoleFillDialog::AddHoleSelectionRows(QFormLayout* form) {
   max_hole_edges_ = new QSpinBox;
   max_hole_edges_->setObjectName("maxHoleEdges");
-  max_hole_edges_->setRange(0, 1000000);
+  Declare(max_hole_edges_, Setting::kMaxHoleSize);
   max_hole_edges_->setSpecialValueText("any size");
-  max_hole_edges_->setToolTip("Holes with more boundary edges stay open; 0: fill every hole.");
   form->addRow("Maximum hole size (edges)", max_hole_edges_);
   keep_longest_open_ = new QCheckBox("leave the longest border open (an open scan's edge)");
   keep_longest_open_->setObjectName("keepLongestOpen");
+  Declare(keep_longest_open_, Setting::kKeepLongestOpen);
   form->addRow("Outer border", keep_longest_open_);
   selected_only_ = new QCheckBox("only holes beside selected faces");
   selected_only_->setObjectName("selectedOnly");
+  Declare(selected_only_, Setting::kSelected);
   form->addRow("Selection", selected_only_);
 }
 
@@ -477,21 +454,26 @@ void HoleFillDialog::LoadSettings() {
   QSettings s("curvature-inpaint", "hole-fill");
   const int b = backend_->findText(s.value("backend", "embedded").toString());
   backend_->setCurrentIndex(b < 0 ? 0 : b);
-  variations_->setValue(s.value("variations", 4).toInt());
-  fake_holes_->setValue(s.value("fake_holes", HoleFillParams().validation.fake_holes).toInt());
-  detail_->setValue(s.value("detail", HoleFillParams().inpaint.detail).toDouble());
-  symmetry_->setChecked(s.value("symmetry", HoleFillParams().symmetry.enabled).toBool());
-  exemplar_->setChecked(s.value("exemplar", HoleFillParams().exemplar).toBool());
-  creases_->setChecked(s.value("creases", HoleFillParams().creases).toBool());
-  tri_laplacian_->setChecked(s.value("triLaplacian", HoleFillParams().tri_laplacian).toBool());
-  similitude_->setValue(s.value("similitude", 30.0).toDouble());
-  transformation_constant_->setText(s.value("transformation_constant", "5e-05").toString());
-  const int m = mode_->findText(s.value("mode", "direct").toString());
+  // What the user chose last, else the defaults every surface starts from.
+  const HoleFillParams d = DefaultSettings();
+  variations_->setValue(s.value("variations", d.inpaint.variations).toInt());
+  fake_holes_->setValue(s.value("fake_holes", d.validation.fake_holes).toInt());
+  detail_->setValue(s.value("detail", d.inpaint.detail).toDouble());
+  symmetry_->setChecked(s.value("symmetry", d.symmetry.enabled).toBool());
+  exemplar_->setChecked(s.value("exemplar", d.exemplar).toBool());
+  creases_->setChecked(s.value("creases", d.creases).toBool());
+  tri_laplacian_->setChecked(s.value("triLaplacian", d.tri_laplacian).toBool());
+  similitude_->setValue(s.value("similitude", d.paper.similitude).toDouble());
+  transformation_constant_->setText(
+      s.value("transformation_constant", QString::number(d.paper.transformation_constant))
+          .toString());
+  const int m = mode_->findText(s.value("mode", DeformationModeName(d.mode)).toString());
   mode_->setCurrentIndex(m < 0 ? 0 : m);
-  image_size_->setValue(s.value("image_size", 512).toInt());
-  max_hole_edges_->setValue(s.value("max_hole_edges", 0).toInt());
-  selected_only_->setChecked(s.value("selected_only", false).toBool());
-  keep_longest_open_->setChecked(s.value("keep_longest_open", false).toBool());
+  image_size_->setValue(s.value("image_size", d.images.image_size).toInt());
+  max_hole_edges_->setValue(s.value("max_hole_edges", d.images.coarse.max_hole_edges).toInt());
+  selected_only_->setChecked(s.value("selected_only", d.images.coarse.selected_only).toBool());
+  keep_longest_open_->setChecked(
+      s.value("keep_longest_open", d.images.coarse.keep_longest_open).toBool());
   BackendChanged();
 }
 

@@ -2,6 +2,8 @@
 
 #include "server_pool.h"
 
+#include "pipeline/fill_settings.h"
+
 #include <vcg_ext/mesh_errors.h>
 
 #include <QBuffer>
@@ -447,9 +449,9 @@ std::string DefaultPrompt(Backend backend) {
 
 void CheckInpaintParams(const InpaintParams& p) {
   using vcg_ext::RequireRange;
-  RequireRange(p.variations, 1, 10, "the number of variations");
+  RequireSetting(Setting::kVariations, p.variations);
   RequireRange(p.size, 0, 4096, "the service's image size (pixels)");
-  RequireRange(p.detail, 0, 10, "the embedded inpainter's detail");
+  RequireSetting(Setting::kDetail, p.detail);
   RequireRange(p.http.connect_timeout_s, 0.001, 86400, "the connection timeout (s)");
   RequireRange(p.http.total_timeout_s, 0.001, 86400, "the timeout (s)");
   RequireRange(double(p.http.max_response_bytes), 1, 1e12, "the largest answer (bytes)");

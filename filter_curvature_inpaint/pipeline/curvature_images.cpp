@@ -1,6 +1,7 @@
 #include "pipeline/curvature_images.h"
 
 #include "io/output_files.h"
+#include "pipeline/fill_settings.h"
 #include "pipeline/pipeline.h"
 #include "report/json_text.h"
 #include "report/montage.h"
@@ -135,7 +136,7 @@ void CheckCurvatureImagesParams(const CurvatureImagesParams& p) {
   RequireRange(p.apss.filter_scale, 1, 100, "the APSS filter scale");
   RequireRange(p.apss.max_projection_iterations, 1, 1000, "the APSS projection iterations");
   RequireRange(p.apss.projection_accuracy, 1e-9, 1, "the APSS projection accuracy");
-  RequireRange(p.image_size, 16, 8192, "the image size (pixels)");
+  RequireSetting(Setting::kImageSize, p.image_size);
   RequireRange(p.apss_rings, 0, 16, "the rings supporting the curvature fits");
   RequireRange(p.low_percentile, 0, 1, "the low curvature percentile");
   RequireRange(p.high_percentile, p.low_percentile, 1, "the high curvature percentile");

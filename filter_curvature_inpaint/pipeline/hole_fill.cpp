@@ -2,9 +2,12 @@
 // (fill_one_hole.h) on the threads, and the mesh changed only once every hole is done.
 #include "pipeline/hole_fill.h"
 
+#include "pipeline/fill_settings.h"
+
 #include "inpaint/server_pool.h"
 #include "io/output_files.h"
 #include "pipeline/fill_one_hole.h"
+#include "pipeline/fill_settings.h"
 #include "pipeline/pipeline.h"
 #include "report/montage.h"
 
@@ -262,8 +265,8 @@ bool DeformationModeFromName(const std::string& name, DeformationMode* mode) {
 
 void CheckHoleFillParams(const HoleFillParams& p) {
   using vcg_ext::RequireRange;
-  if (p.mode != DeformationMode::kDirect && p.mode != DeformationMode::kPaper)
-    throw vcg_ext::InvalidParameterError("unknown deformation mode (direct or paper)");
+  // The settings a person gives, each in its declared range; then what the stages check.
+  for (const SettingSpec& s : Settings()) RequireSetting(s.id, SettingValue(s.id, p));
   CheckCurvatureImagesParams(p.images);
   CheckInpaintParams(p.inpaint);
   RequireRange(p.pick, -1, 1000, "the variation to use");
@@ -271,10 +274,7 @@ void CheckHoleFillParams(const HoleFillParams& p) {
   RequireRange(p.direct.iterations, 1, 100, "the deformation solves");
   RequireRange(p.direct.apss_passes, 0, 20, "the curvature passes");
   RequireRange(p.direct.apss_gain, 1e-3, 1, "the curvature passes' gain");
-  RequireRange(p.paper.similitude, 0, 255, "the similitude");
-  RequireRange(p.paper.transformation_constant, 0, 1, "the transformation constant");
   RequireRange(p.paper.max_iterations, 1, 100000, "the deformation steps");
-  RequireRange(p.validation.fake_holes, 0, 16, "the fake holes per hole");
   RequireRange(p.validation.image_size, 16, 8192, "the fake holes' image size");
   RequireRange(p.validation.max_flatter, 0, 1e6,
                "how much flatter a hole may be than its fake holes");

@@ -1,6 +1,7 @@
 #include "filter_table.h"
 
 #include "pipeline/curvature_images.h"
+#include "pipeline/fill_settings.h"
 #include "pipeline/hole_fill.h"
 #include "report/json_text.h"
 
@@ -11,19 +12,19 @@ namespace curvature_inpaint {
 namespace plugin {
 namespace {
 
-ParamSpec Bool(const char* name, bool value, const char* label, const char* help) {
+ParamSpec Bool(const char* name, bool value, const char* label, const std::string& help) {
   ParamSpec p{ParamType::kBool, name, label, help, {}, {}};
   p.value.b = value;
   return p;
 }
 
-ParamSpec Int(const char* name, int value, const char* label, const char* help) {
+ParamSpec Int(const char* name, int value, const char* label, const std::string& help) {
   ParamSpec p{ParamType::kInt, name, label, help, {}, {}};
   p.value.i = value;
   return p;
 }
 
-ParamSpec Float(const char* name, double value, const char* label, const char* help) {
+ParamSpec Float(const char* name, double value, const char* label, const std::string& help) {
   ParamSpec p{ParamType::kFloat, name, label, help, {}, {}};
   p.value.f = float(value);
   return p;
@@ -36,27 +37,35 @@ ParamSpec String(const char* name, const std::string& value, const char* label, 
 }
 
 ParamSpec Enum(const char* name, int value, std::vector<std::string> choices, const char* label,
-               const char* help) {
+               const std::string& help) {
   ParamSpec p{ParamType::kEnum, name, label, help, {}, std::move(choices)};
   p.value.i = value;
   return p;
 }
 
-// The paper's two constants, shared by Curvature Inpaint Hole Fill and Deform to Curvature Image.
-void AddPaperModeParams(std::vector<ParamSpec>& params) {
-  const HoleFillParams d;
-  params.push_back(Float("Similitude", d.paper.similitude, "Similitude (paper mode)",
-                         "Colour difference (0-255, any channel) above which a vertex is moved."));
-  params.push_back(Float("TransformationConstant", d.paper.transformation_constant,
-                         "Transformation constant (paper mode)",
-                         "How far a differing vertex moves per step, in the unit box."));
+/// A setting of the hole fill as its filters declare it (fill_settings.h): name, label, help
+/// and the default a person starts from.
+ParamSpec FromSetting(Setting id) {
+  const SettingSpec& s = SettingOf(id);
+  const double value = SettingValue(id, DefaultSettings());
+  const std::string help = SettingHelp(s);
+  switch (s.type) {
+  case SettingType::kBool:
+    return Bool(s.script_name, value != 0, s.label, help);
+  case SettingType::kInt:
+    return Int(s.script_name, int(value), s.label, help);
+  case SettingType::kFloat:
+    return Float(s.script_name, value, s.label, help);
+  case SettingType::kChoice:
+    return Enum(s.script_name, int(value), SettingChoices(id), s.label, help);
+  }
+  throw std::out_of_range("no such setting type");
 }
 
-/// The backends' names, in the order of InpaintBackends(): the filter's list.
-std::vector<std::string> BackendNames() {
-  std::vector<std::string> names;
-  for (Backend b : InpaintBackends()) names.push_back(BackendName(b));
-  return names;
+// The paper's two constants, shared by Curvature Inpaint Hole Fill and Deform to Curvature Image.
+void AddPaperModeParams(std::vector<ParamSpec>& params) {
+  params.push_back(FromSetting(Setting::kSimilitude));
+  params.push_back(FromSetting(Setting::kTransformationConstant));
 }
 
 FilterSpec CoarseHoleFill() {
@@ -77,14 +86,9 @@ FilterSpec CoarseHoleFill() {
       false,
       {}};
   auto& p = f.params;
-  p.push_back(Int("MaxHoleSize", 0, "Max size to be closed",
-                  "Holes with more boundary edges than this stay open (like MeshLab's Close "
-                  "Holes). 0 fills holes of any size."));
-  p.push_back(Bool("KeepLongestOpen", false, "Leave the outer border open",
-                   "The longest boundary loop is the outer border of an open scan (a terrain, a "
-                   "relief, a face mask), not a hole: leave it open."));
-  p.push_back(Bool("Selected", false, "Close holes with selected faces",
-                   "Only the holes with at least one selected face on their border are filled."));
+  p.push_back(FromSetting(Setting::kMaxHoleSize));
+  p.push_back(FromSetting(Setting::kKeepLongestOpen));
+  p.push_back(FromSetting(Setting::kSelected));
   p.push_back(Bool("Refine", true, "Refine to the surrounding density",
                    "Insert vertices so the fill's edges are as long as the edges around the hole "
                    "(Liepa's refinement with Delaunay edge flips). Off: the hole is only "
@@ -136,7 +140,6 @@ FilterSpec CurvatureImages() {
 }
 
 FilterSpec HoleFill() {
-  const HoleFillParams d;
   FilterSpec f{FilterId::kHoleFill,
                "Curvature Inpaint Hole Fill",
                "meshing_close_holes_curvature_inpaint",
@@ -151,11 +154,7 @@ FilterSpec HoleFill() {
                true,
                {}};
   auto& p = f.params;
-  p.push_back(Enum("Backend", 0, BackendNames(), "Inpainting backend",
-                   "embedded: offline, the default. openai: DALL-E 2 or gpt-image-1 (key in "
-                   "OPENAI_API_KEY). sd-webui: AUTOMATIC1111, Forge or SD.Next (Basic auth from "
-                   "SD_WEBUI_AUTH). stability: Stability AI (STABILITY_API_KEY). comfyui: a "
-                   "ComfyUI server with the shipped workflow."));
+  p.push_back(FromSetting(Setting::kBackend));
   p.push_back(String("ServerUrl", "", "Server URL",
                      "The service's address; empty: the backend's default (OpenAI's and "
                      "Stability's public APIs, http://127.0.0.1:7860 for sd-webui, "
@@ -164,53 +163,23 @@ FilterSpec HoleFill() {
   p.push_back(String("Prompt", "", "Prompt",
                      "Empty: the paper's prompt for the backend (\"fill in the blanks\" for "
                      "DALL-E 2; the curvature colour map description for Stable Diffusion)."));
-  p.push_back(Int("Variations", d.inpaint.variations, "Variations",
-                  "How many completions of each hole's image to ask for (1-10)."));
+  p.push_back(FromSetting(Setting::kVariations));
   p.push_back(Int("Variation", 0, "Variation to use",
                   "0: the one with the best score (continuity across the hole's border, colours "
                   "on the palette, values in the surroundings' range); k: the k-th; -1: none, "
                   "every hole keeps its coarse fill."));
-  p.push_back(Int("FakeHoles", d.validation.fake_holes, "Fake holes per hole",
-                  "Embedded backend: cut this many holes of each hole's size into the known "
-                  "surface near it, fill them every way (the coarse fill, detail amplitudes 0 to "
-                  "2, the priors below) and fill the real hole the way that came closest to the "
-                  "surface cut out where it is also closer than the coarse fill on the fake holes "
-                  "that hold half of the coarse fill's error, else with the coarse fill (0-16). 0: "
-                  "every hole gets the detail below."));
-  p.push_back(Float("Detail", d.inpaint.detail, "Detail",
-                    "Embedded backend, with no fake holes: the amplitude of the synthesised "
-                    "detail, relative to the surroundings' own (0-10; 0: the smooth continuation "
-                    "of the curvature)."));
-  p.push_back(Bool("Symmetry", d.symmetry.enabled, "Use the object's symmetry",
-                   "Find the mirror planes of the object; a hole whose mirror image is known "
-                   "surface gets its mirrored curvature and its mirrored surface as two more "
-                   "variations, used where the fake holes validate them."));
-  p.push_back(Bool("Exemplar", d.exemplar, "Offer exemplar variations",
-                   "Embedded backend: as many more variations copied from patches of the known "
-                   "curvature, ridges and valleys first, used where the fake holes validate "
-                   "them."));
-  p.push_back(Bool("Creases", d.creases, "Carry creases across holes",
-                   "A hole that sharp edges run into gets one more variation: the smooth faces "
-                   "around it extended until they meet, so edges and corners come back sharp; "
-                   "a hole inside one smooth face with no sharp edge near, that face extended; "
-                   "used where the fake holes validate it."));
-  p.push_back(Bool("TriLaplacian", d.tri_laplacian, "Continue the curvature",
-                   "Each hole gets one more variation: its fill faired to continue the "
-                   "curvature of the surface around it, not only its tangents (tri-Laplacian); "
-                   "used where the fake holes validate it."));
+  p.push_back(FromSetting(Setting::kFakeHoles));
+  p.push_back(FromSetting(Setting::kDetail));
+  p.push_back(FromSetting(Setting::kSymmetry));
+  p.push_back(FromSetting(Setting::kExemplar));
+  p.push_back(FromSetting(Setting::kCreases));
+  p.push_back(FromSetting(Setting::kTriLaplacian));
   AddPaperModeParams(p);
-  p.push_back(Enum("Mode", 0, {"direct", "paper"}, "Deformation",
-                   "direct: a few sparse solves for the positions whose mean curvature matches "
-                   "the image. paper: the paper's small steps of control vertices."));
-  p.push_back(Int("MaxHoleSize", 0, "Max size to be closed",
-                  "Holes with more boundary edges stay open. 0: every hole."));
-  p.push_back(Bool("KeepLongestOpen", false, "Leave the outer border open",
-                   "The longest boundary loop is the outer border of an open scan, not a hole: "
-                   "leave it open."));
-  p.push_back(Bool("Selected", false, "Close holes with selected faces",
-                   "Only the holes with a selected face on their border are filled."));
-  p.push_back(Int("ImageSize", 512, "Image size (pixels)",
-                  "Side of the curvature images given to the inpainter."));
+  p.push_back(FromSetting(Setting::kMode));
+  p.push_back(FromSetting(Setting::kMaxHoleSize));
+  p.push_back(FromSetting(Setting::kKeepLongestOpen));
+  p.push_back(FromSetting(Setting::kSelected));
+  p.push_back(FromSetting(Setting::kImageSize));
   p.push_back(String("OutputFolder", "", "Output folder",
                      "Where to write every hole's images (coarse, mask, variations, final) and a "
                      "montage; empty: nowhere."));
@@ -234,8 +203,7 @@ FilterSpec DeformToImage() {
   p.push_back(String("Folder", "", "Folder of the images",
                      "The output folder of Curvature Images, holding hole_<k>.json and your "
                      "hole_<k>_inpainted.png."));
-  p.push_back(Enum("Mode", 0, {"direct", "paper"}, "Deformation",
-                   "direct: a few sparse solves. paper: the paper's small steps."));
+  p.push_back(FromSetting(Setting::kMode));
   AddPaperModeParams(p);
   p.push_back(Int("MaxHoleSize", 0, "Max size to be closed", "As given to Curvature Images."));
   p.push_back(Float("Context", d.images.segmentation.context, "Context around each hole",
