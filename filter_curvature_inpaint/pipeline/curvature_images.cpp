@@ -59,11 +59,10 @@ void BuildHoleImage(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vcg_e
                   std::to_string(out.patch.boundary_loops) + " boundary loops)";
     return;
   }
-  std::vector<Eigen::Vector3d> points, normals;
-  ApssNeighbourhood(m, vf, box, out.patch.vertices, params.apss_rings, points, normals);
+  const ApssSupport support = ApssNeighbourhood(m, vf, box, out.patch.vertices, params.apss_rings);
   std::vector<int> query(out.patch.vertices.size());
   for (size_t i = 0; i < query.size(); ++i) query[i] = int(i);
-  out.curvature = vcg_ext::ApssMeanCurvature(points, normals, query, params.apss);
+  out.curvature = vcg_ext::ApssMeanCurvature(support.points, support.normals, query, params.apss);
 
   // Normalize by the known ring: the vertices of the scan's faces in the patch. A loop vertex
   // with none (where two holes meet at one vertex) is the scan's too, but no scan surface
@@ -96,10 +95,12 @@ void BuildHoleImage(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vcg_e
 
 } // namespace
 
-void ApssNeighbourhood(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vcg_ext::UnitBox& box,
-                       const std::vector<int>& patch_vertices, int rings,
-                       std::vector<Eigen::Vector3d>& points,
-                       std::vector<Eigen::Vector3d>& normals) {
+ApssSupport ApssNeighbourhood(const CMeshO& m, const vcg_ext::VertexFaces& vf,
+                              const vcg_ext::UnitBox& box, const std::vector<int>& patch_vertices,
+                              int rings) {
+  ApssSupport out;
+  std::vector<Eigen::Vector3d>& points = out.points;
+  std::vector<Eigen::Vector3d>& normals = out.normals;
   std::vector<int> order(patch_vertices);
   std::unordered_set<int> in(order.begin(), order.end());
   size_t ring_start = 0;
@@ -114,8 +115,6 @@ void ApssNeighbourhood(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vc
       });
     ring_start = ring_end;
   }
-  points.clear();
-  normals.clear();
   for (int v : order) {
     points.push_back(box.ToUnit(m.vert[v].cP()));
     Eigen::Vector3d n = Eigen::Vector3d::Zero();
@@ -126,6 +125,7 @@ void ApssNeighbourhood(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vc
     });
     normals.push_back(n.norm() > 0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d(0, 0, 1));
   }
+  return out;
 }
 
 void CheckCurvatureImagesParams(const CurvatureImagesParams& p) {

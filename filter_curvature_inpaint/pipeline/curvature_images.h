@@ -93,12 +93,16 @@ QImage MaskImage(const vcg_ext::CurvatureImage& img);
 /// Writes montage.png: one row per hole (curvature, RGBA over a checkerboard, mask).
 void WriteMontage(const std::string& path, const CurvatureImagesResult& result);
 
-/// The vertices `patch_vertices` of `m` first, then `rings` rings around them, in unit-box
-/// coordinates with area-weighted normals from their faces: the point set the APSS fits of
-/// the curvature images run on.
-void ApssNeighbourhood(const CMeshO& m, const vcg_ext::VertexFaces& vf, const vcg_ext::UnitBox& box,
-                       const std::vector<int>& patch_vertices, int rings,
-                       std::vector<Eigen::Vector3d>& points, std::vector<Eigen::Vector3d>& normals);
+/// The point set the APSS fits of the curvature images run on: points with area-weighted
+/// normals from their faces, in unit-box coordinates.
+struct ApssSupport {
+  std::vector<Eigen::Vector3d> points, normals;
+};
+
+/// The vertices `patch_vertices` of `m` first, then `rings` rings around them.
+ApssSupport ApssNeighbourhood(const CMeshO& m, const vcg_ext::VertexFaces& vf,
+                              const vcg_ext::UnitBox& box, const std::vector<int>& patch_vertices,
+                              int rings);
 
 std::vector<std::string> DescribeCurvatureImages(const CurvatureImagesResult& result);
 

@@ -243,11 +243,11 @@ GroundTruthImage GroundTruthOracle::Image(const HoleImage& hi) const {
                   " flipped triangles)";
     return out;
   }
-  std::vector<Eigen::Vector3d> support, normals;
-  ApssNeighbourhood(gt_, vf_, box_, truth.vertices, params_.apss_rings, support, normals);
+  const ApssSupport support = ApssNeighbourhood(gt_, vf_, box_, truth.vertices, params_.apss_rings);
   std::vector<int> query(truth.vertices.size());
   for (size_t i = 0; i < query.size(); ++i) query[i] = int(i);
-  const std::vector<double> h = vcg_ext::ApssMeanCurvature(support, normals, query, params_.apss);
+  const std::vector<double> h =
+      vcg_ext::ApssMeanCurvature(support.points, support.normals, query, params_.apss);
   std::vector<double> value(h.size(), 0.5);
   for (size_t i = 0; i < h.size(); ++i)
     if (std::isfinite(h[i])) value[i] = vcg_ext::CurvatureColormap::Value(h[i], hi.scale);

@@ -153,27 +153,36 @@ void StandInForSurfacePriors(const std::vector<ValidationCandidate>& candidates,
 /// whose detail ratio on the fake holes lies in 0.7-1.3 (as much detail as the cut surface
 /// had), the closest of those: four fake holes cannot tell a few per cent apart, the detail
 /// ratio says which fill looks like the surface around it. The ratios cost curvature fits, so
-/// they are measured only where they break a tie; `detail` gets them (-1 elsewhere).
-size_t ChooseCandidate(const std::vector<double>& error, const std::vector<FakeHoleTrial>& trials,
-                       const HoleFillParams& params, std::vector<double>& detail) {
+/// they are measured only where they break a tie (-1 elsewhere).
+struct CandidateChoice {
+  size_t chosen = 0;
+  std::vector<double> detail; ///< per candidate: its detail ratio, or -1
+};
+
+CandidateChoice ChooseCandidate(const std::vector<double>& error,
+                                const std::vector<FakeHoleTrial>& trials,
+                                const HoleFillParams& params) {
   const size_t n = error.size();
+  CandidateChoice out;
+  std::vector<double>& detail = out.detail;
   detail.assign(n, -1.0);
   const size_t best = size_t(std::min_element(error.begin(), error.end()) - error.begin());
+  out.chosen = best;
   std::vector<size_t> tied;
   for (size_t c = 0; c < n; ++c)
     if (error[c] <= (1 + params.validation.tie) * error[best]) tied.push_back(c);
-  if (tied.size() < 2) return best;
+  if (tied.size() < 2) return out;
   const double used = double(trials.size());
   for (size_t c : tied) detail[c] = 0;
   for (const FakeHoleTrial& t : trials) {
     const FakeHole& fake = *t.fake;
-    std::vector<Eigen::Vector3d> support, normals;
-    ApssNeighbourhood(fake.truth, vcg_ext::VertexFaces(fake.truth), t.images.coarse.box,
-                      fake.cut_vertices, params.images.apss_rings, support, normals);
+    const ApssSupport support =
+        ApssNeighbourhood(fake.truth, vcg_ext::VertexFaces(fake.truth), t.images.coarse.box,
+                          fake.cut_vertices, params.images.apss_rings);
     std::vector<int> query(fake.cut_vertices.size());
     for (size_t i = 0; i < query.size(); ++i) query[i] = int(i);
-    const double truth =
-        Spread(vcg_ext::ApssMeanCurvature(support, normals, query, params.images.apss));
+    const double truth = Spread(
+        vcg_ext::ApssMeanCurvature(support.points, support.normals, query, params.images.apss));
     for (size_t c : tied) {
       const std::vector<double> h =
           PatchCurvature(t.fills[c], t.Hole().patch.triangles, params.images.apss);
@@ -184,10 +193,9 @@ size_t ChooseCandidate(const std::vector<double>& error, const std::vector<FakeH
     }
   }
   auto natural = [&](size_t c) { return detail[c] >= 0.7 && detail[c] <= 1.3; };
-  size_t choice = best;
   for (size_t c : tied)
-    if (natural(c) && (!natural(choice) || error[c] < error[choice])) choice = c;
-  return choice;
+    if (natural(c) && (!natural(out.chosen) || error[c] < error[out.chosen])) out.chosen = c;
+  return out;
 }
 
 /// The index of the smooth (coarse) fill among the candidates; candidates.size() where it is
@@ -201,15 +209,16 @@ size_t SmoothFillIndex(const std::vector<ValidationCandidate>& candidates) {
 /// Fake holes cut where the surface curves far more than around the hole (a near-flat spot
 /// among a machined part's fillets) reward a prior for bending the fill as they bend; the
 /// hole's own flat surroundings ask for the smooth cap. Whether the hole's ring is more than
-/// `max_flatter` times flatter than its fake holes' (median), and the note that says so.
-bool FlatterThanFakeHoles(const HoleImage& hi, const std::vector<FakeHoleTrial>& trials,
-                          double max_flatter, std::string& note) {
+/// `max_flatter` times flatter than its fake holes' (median): the note that says so, empty where
+/// it is not.
+std::string FlatterThanFakeHoles(const HoleImage& hi, const std::vector<FakeHoleTrial>& trials,
+                                 double max_flatter) {
   std::vector<double> fake_ring;
   for (const FakeHoleTrial& t : trials) fake_ring.push_back(RingCurvature(t.Hole()));
   std::nth_element(fake_ring.begin(), fake_ring.begin() + std::ptrdiff_t(fake_ring.size() / 2),
                    fake_ring.end());
   const double own_ring = RingCurvature(hi), fakes_ring = fake_ring[fake_ring.size() / 2];
-  if (!(max_flatter > 0 && fakes_ring > max_flatter * own_ring)) return false;
+  if (!(max_flatter > 0 && fakes_ring > max_flatter * own_ring)) return "";
   std::ostringstream out;
   out.precision(3);
   if (own_ring > 0)
@@ -218,8 +227,7 @@ bool FlatterThanFakeHoles(const HoleImage& hi, const std::vector<FakeHoleTrial>&
   else
     out << "the surface around it is flat, unlike around its fake holes";
   out << ": they do not show how it fills, so it keeps the smooth coarse fill";
-  note = out.str();
-  return true;
+  return out.str();
 }
 
 } // namespace
@@ -275,11 +283,12 @@ ValidationRecord ValidateHole(const HoleImage& hi, const HoleFillParams& params,
   for (const FakeHoleTrial& t : trials)
     for (size_t c = 0; c < candidates.size(); ++c) error[c] += t.errors[c];
   for (double& e : error) e /= double(trials.size());
-  std::vector<double> detail;
-  size_t choice = ChooseCandidate(error, trials, params, detail);
+  const CandidateChoice chosen = ChooseCandidate(error, trials, params);
+  size_t choice = chosen.chosen;
   const size_t smooth = SmoothFillIndex(candidates);
-  std::string flatter;
-  if (smooth < candidates.size() && FlatterThanFakeHoles(hi, trials, vp.max_flatter, flatter)) {
+  const std::string flatter =
+      smooth < candidates.size() ? FlatterThanFakeHoles(hi, trials, vp.max_flatter) : "";
+  if (!flatter.empty()) {
     choice = smooth;
     why = why.empty() ? flatter : why + "; " + flatter;
   }
@@ -289,7 +298,7 @@ ValidationRecord ValidateHole(const HoleImage& hi, const HoleFillParams& params,
     choice = smooth;
   }
   record.errors = error;
-  record.detail = detail;
+  record.detail = chosen.detail;
   record.chosen = int(choice);
   if (!why.empty()) record.note = why;
   return record;
