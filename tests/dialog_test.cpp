@@ -85,6 +85,8 @@ private slots:
             in_filter = in_filter && p.value.i == int(value);
           if (p.type == plugin::ParamType::kFloat)
             in_filter = in_filter && p.value.f == float(value);
+          if (p.type == plugin::ParamType::kString)
+            in_filter = in_filter && p.value.s == SettingText(s.id, defaults);
         }
       QVERIFY2(in_filter, s.script_name);
       bool in_dialog = false;
@@ -96,7 +98,7 @@ private slots:
         in_help = in_help || (o.name == std::string(s.option) && o.help == SettingBrief(s));
       QVERIFY2(in_help && cli::CommandHelp(*fill).find(s.option) != std::string::npos,
                s.script_name);
-      if (s.type == SettingType::kBool) continue;
+      if (s.type == SettingType::kBool || s.type == SettingType::kText) continue;
       HoleFillParams past = defaults;
       const double end = s.type == SettingType::kChoice ? double(SettingChoices(s.id).size())
                                                         : s.max + std::max(1.0, std::abs(s.max));

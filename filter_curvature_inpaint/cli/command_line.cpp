@@ -58,11 +58,11 @@ const Options kOutput{
 
 const Options kBackend{
     FromSetting(Setting::kBackend),
-    {"--url", "URL", "the service's address; repeat it for several servers of one service"},
+    FromSetting(Setting::kServerUrl),
     {"--url-file", "FILE", "the services' addresses, one a line ('#' starts a comment)"},
     {"--per-server", "M", "requests in flight on each server (default 1)"},
-    {"--model", "M", "openai: dall-e-2 or gpt-image-1"},
-    {"--prompt", "TEXT", "what the image shows, for the remote backends"},
+    FromSetting(Setting::kModel),
+    FromSetting(Setting::kPrompt),
     {"--negative-prompt", "TEXT", "what it must not show (sd-webui, stability, comfyui)"},
     {"--seed", "S", "the inpainter's seed (default 1): the same seed, the same fill"},
     {"--workflow", "FILE", "comfyui: an edited copy of the shipped workflow"},

@@ -209,11 +209,11 @@ QPushButton* HoleFillDialog::AddServiceRows(QFormLayout* form) {
   form->addRow("&Backend", backend_);
   url_ = new QLineEdit;
   url_->setObjectName("url");
-  url_->setToolTip("The service's address; empty: the backend's default (shown greyed).");
+  Declare(url_, Setting::kServerUrl);
   form->addRow("Server &URL", url_);
   model_ = new QLineEdit;
   model_->setObjectName("model");
-  model_->setToolTip("OpenAI: dall-e-2 (the paper's) or gpt-image-1; empty: the default.");
+  Declare(model_, Setting::kModel);
   form->addRow("&Model", model_);
   key_ = new QLabel;
   key_->setObjectName("keyStatus");
@@ -221,7 +221,7 @@ QPushButton* HoleFillDialog::AddServiceRows(QFormLayout* form) {
   form->addRow("API key", key_);
   prompt_ = new QLineEdit;
   prompt_->setObjectName("prompt");
-  prompt_->setToolTip("What the image model is told; the paper's prompt for the backend.");
+  Declare(prompt_, Setting::kPrompt);
   form->addRow("&Prompt", prompt_);
   negative_prompt_ = new QLineEdit;
   negative_prompt_->setObjectName("negativePrompt");

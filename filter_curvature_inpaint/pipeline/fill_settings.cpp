@@ -23,6 +23,20 @@ const std::vector<SettingSpec>& AllSettings() {
      "auth from SD_WEBUI_AUTH). stability: Stability AI (STABILITY_API_KEY). comfyui: a ComfyUI "
      "server with the shipped workflow.",
      "the backend", 0, 0},
+    {Setting::kServerUrl, SettingType::kText, "ServerUrl", "Server URL", "--url", "URL",
+     "the service's address; repeat it for several servers of one service",
+     "The service's address; empty: the backend's default (OpenAI's and Stability's public APIs, "
+     "http://127.0.0.1:7860 for sd-webui, http://127.0.0.1:8188 for ComfyUI).",
+     "the server URL", 0, 0},
+    {Setting::kModel, SettingType::kText, "Model", "Model", "--model", "M",
+     "openai: dall-e-2 or gpt-image-1",
+     "OpenAI: dall-e-2 (the paper's) or gpt-image-1; empty: the default.",
+     "the model", 0, 0},
+    {Setting::kPrompt, SettingType::kText, "Prompt", "Prompt", "--prompt", "TEXT",
+     "what the image shows, for the remote backends",
+     "What the image model is told; empty: the paper's prompt for the backend (\"fill in the "
+     "blanks\" for DALL-E 2; the curvature colour map description for Stable Diffusion).",
+     "the prompt", 0, 0},
     {Setting::kVariations, SettingType::kInt, "Variations", "Variations", "--variations", "N",
      "curvature images the inpainter completes per hole",
      "How many completions of each hole's curvature image to ask for, to choose from.",
@@ -130,6 +144,10 @@ double SettingValue(Setting id, const HoleFillParams& p) {
   switch (id) {
   case Setting::kBackend:
     return double(static_cast<int>(p.inpaint.backend));
+  case Setting::kServerUrl:
+  case Setting::kModel:
+  case Setting::kPrompt:
+    return 0;
   case Setting::kVariations:
     return p.inpaint.variations;
   case Setting::kFakeHoles:
@@ -167,6 +185,10 @@ void SetSetting(Setting id, double value, HoleFillParams& p) {
   case Setting::kBackend:
     p.inpaint.backend = static_cast<Backend>(int(value));
     return;
+  case Setting::kServerUrl:
+  case Setting::kModel:
+  case Setting::kPrompt:
+    return; // texts: set where they are read
   case Setting::kVariations:
     p.inpaint.variations = int(value);
     return;
@@ -212,6 +234,19 @@ void SetSetting(Setting id, double value, HoleFillParams& p) {
   }
 }
 
+std::string SettingText(Setting id, const HoleFillParams& p) {
+  switch (id) {
+  case Setting::kServerUrl:
+    return p.inpaint.url;
+  case Setting::kModel:
+    return p.inpaint.model;
+  case Setting::kPrompt:
+    return p.inpaint.prompt;
+  default:
+    return "";
+  }
+}
+
 std::vector<std::string> SettingChoices(Setting id) {
   std::vector<std::string> names;
   if (id == Setting::kBackend)
@@ -234,7 +269,7 @@ std::string SettingHelp(const SettingSpec& s) {
 }
 
 std::string SettingBrief(const SettingSpec& s) {
-  if (s.type == SettingType::kBool) return s.brief;
+  if (s.type == SettingType::kBool || s.type == SettingType::kText) return s.brief;
   const double value = SettingValue(s.id, DefaultSettings());
   const std::vector<std::string> choices = SettingChoices(s.id);
   const std::string shown = choices.empty() ? Number(value) : choices[size_t(value)];

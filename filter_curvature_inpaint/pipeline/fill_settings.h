@@ -15,6 +15,9 @@ struct HoleFillParams;
 
 enum class Setting {
   kBackend,
+  kServerUrl,
+  kModel,
+  kPrompt,
   kVariations,
   kFakeHoles,
   kDetail,
@@ -31,7 +34,7 @@ enum class Setting {
   kSelected,
 };
 
-enum class SettingType { kBool, kInt, kFloat, kChoice };
+enum class SettingType { kBool, kInt, kFloat, kChoice, kText };
 
 struct SettingSpec {
   Setting id;
@@ -45,7 +48,7 @@ struct SettingSpec {
   const char* brief;      ///< the command line's line of help, without the default
   const char* help;       ///< the tooltip, without the range
   const char* what;       ///< in an error: "the fake holes per hole must be from 0 to 16"
-  double min, max;        ///< the range checked (a choice's is its indices, max unused)
+  double min, max; ///< the range checked (a choice's is its indices, max unused; a text has none)
 };
 
 /// Every setting, in Setting's order.
@@ -58,8 +61,11 @@ const SettingSpec& SettingOf(Setting id);
 /// DALL-E 2's).
 HoleFillParams DefaultSettings();
 
-/// The setting's value in `p` (a bool 0 or 1, a choice its index).
+/// The setting's value in `p` (a bool 0 or 1, a choice its index; a text 0, see SettingText).
 double SettingValue(Setting id, const HoleFillParams& p);
+
+/// A text setting's value in `p`; empty for the others.
+std::string SettingText(Setting id, const HoleFillParams& p);
 
 /// Sets it in `p` (a bool: nonzero is on; a choice: the index, as it is).
 void SetSetting(Setting id, double value, HoleFillParams& p);

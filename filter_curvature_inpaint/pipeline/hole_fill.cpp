@@ -266,7 +266,8 @@ bool DeformationModeFromName(const std::string& name, DeformationMode* mode) {
 void CheckHoleFillParams(const HoleFillParams& p) {
   using vcg_ext::RequireRange;
   // The settings a person gives, each in its declared range; then what the stages check.
-  for (const SettingSpec& s : Settings()) RequireSetting(s.id, SettingValue(s.id, p));
+  for (const SettingSpec& s : Settings())
+    if (s.type != SettingType::kText) RequireSetting(s.id, SettingValue(s.id, p));
   CheckCurvatureImagesParams(p.images);
   CheckInpaintParams(p.inpaint);
   RequireRange(p.pick, -1, 1000, "the variation to use");

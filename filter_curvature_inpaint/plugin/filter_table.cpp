@@ -30,7 +30,8 @@ ParamSpec Float(const char* name, double value, const char* label, const std::st
   return p;
 }
 
-ParamSpec String(const char* name, const std::string& value, const char* label, const char* help) {
+ParamSpec String(const char* name, const std::string& value, const char* label,
+                 const std::string& help) {
   ParamSpec p{ParamType::kString, name, label, help, {}, {}};
   p.value.s = value;
   return p;
@@ -58,6 +59,8 @@ ParamSpec FromSetting(Setting id) {
     return Float(s.script_name, value, s.label, help);
   case SettingType::kChoice:
     return Enum(s.script_name, int(value), SettingChoices(id), s.label, help);
+  case SettingType::kText:
+    return String(s.script_name, SettingText(id, DefaultSettings()), s.label, help);
   }
   throw std::out_of_range("no such setting type");
 }
@@ -155,14 +158,9 @@ FilterSpec HoleFill() {
                {}};
   auto& p = f.params;
   p.push_back(FromSetting(Setting::kBackend));
-  p.push_back(String("ServerUrl", "", "Server URL",
-                     "The service's address; empty: the backend's default (OpenAI's and "
-                     "Stability's public APIs, http://127.0.0.1:7860 for sd-webui, "
-                     "http://127.0.0.1:8188 for ComfyUI)."));
-  p.push_back(String("Model", "", "Model", "openai: dall-e-2 (default) or gpt-image-1."));
-  p.push_back(String("Prompt", "", "Prompt",
-                     "Empty: the paper's prompt for the backend (\"fill in the blanks\" for "
-                     "DALL-E 2; the curvature colour map description for Stable Diffusion)."));
+  p.push_back(FromSetting(Setting::kServerUrl));
+  p.push_back(FromSetting(Setting::kModel));
+  p.push_back(FromSetting(Setting::kPrompt));
   p.push_back(FromSetting(Setting::kVariations));
   p.push_back(Int("Variation", 0, "Variation to use",
                   "0: the one with the best score (continuity across the hole's border, colours "
