@@ -141,6 +141,11 @@ inline double SolidValue(const std::vector<SolidTerm>& terms,
   return value;
 }
 
+/// The cosine under which two faces' normals meet at a crease.
+inline double CreaseCosine(const CreaseFillParams& params) {
+  return std::cos(params.crease_angle * M_PI / 180);
+}
+
 /// A hole's patch as the crease fill reads it: the arrays it was given, each triangle's normal
 /// in the coarse fill, the border's vertices and the fill's extent.
 struct CreasePatch {
@@ -195,7 +200,7 @@ inline KnownEdges ClassifyKnownEdges(const CreasePatch& p, const CreaseFillParam
         const int a = p.triangles[t][size_t(k)], b = p.triangles[t][size_t((k + 1) % 3)];
         by_edge[{std::min(a, b), std::max(a, b)}].push_back(int(t));
       }
-  const double cos_crease = std::cos(params.crease_angle * M_PI / 180);
+  const double cos_crease = CreaseCosine(params);
   const double cos_smooth = std::cos(params.smooth_angle * M_PI / 180);
   KnownEdges edges;
   edges.smooth_neighbours.resize(nt);
@@ -328,7 +333,7 @@ inline std::vector<double> FaceMeetings(const CreasePatch& p, const KnownEdges& 
   // left unpaired, each face's extension runs on through the other. How they meet shows in
   // their vertices near the hole: of a convex edge, each face lies below the other's surface;
   // of a concave one, above. Faces with vertices on both sides of each other do not meet here.
-  const double cos_crease = std::cos(params.crease_angle * M_PI / 180);
+  const double cos_crease = CreaseCosine(params);
   const double tolerance = params.max_fit_residual * p.radius;
   for (size_t a = 0; a < nr; ++a)
     for (size_t b = a + 1; b < nr; ++b) {
@@ -731,7 +736,7 @@ inline CreaseFill FillAcrossCreases(const std::vector<Eigen::Vector3d>& points,
     return out;
   }
   solid.formula = detail::SolidFormula(patch, regions, solid.sense, params);
-  detail::PairByFormula(std::cos(params.crease_angle * M_PI / 180), solid, out);
+  detail::PairByFormula(detail::CreaseCosine(params), solid, out);
 
   detail::FillOnSolid fill;
   if (!detail::ProjectFill(patch, solid, fill)) {

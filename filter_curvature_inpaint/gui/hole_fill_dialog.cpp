@@ -204,7 +204,8 @@ QPushButton* HoleFillDialog::AddServiceRows(QFormLayout* form) {
 
   backend_ = new QComboBox;
   backend_->setObjectName("backend");
-  for (Backend b : InpaintBackends()) backend_->addItem(QString::fromStdString(BackendName(b)));
+  for (const std::string& name : SettingChoices(Setting::kBackend))
+    backend_->addItem(QString::fromStdString(name));
   Declare(backend_, Setting::kBackend);
   form->addRow("&Backend", backend_);
   url_ = new QLineEdit;
