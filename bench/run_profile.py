@@ -28,7 +28,7 @@ ROWS = [
     ("validation: a test cut's continuation (one solve, every amplitude)", ["ValidateHole", "InpaintEmbeddedAmplitudes"]),
     ("validation: continuation candidates' fills (deformations)", ["ValidateHole", "ContinuationCandidate::FillFakeHole"]),
     ("validation: mirrored curvature candidate's fills (deformations)", ["ValidateHole", "SymmetryCandidate::FillFakeHole"]),
-    ("validation: the fills' errors against the surface cut out", ["ValidateHole", "FakeHoleError"]),
+    ("validation: the fills' errors against the surface cut out", ["ValidateHole", "FakeHoleScorer::Error"]),
     ("validation: cutting the test cuts", ["ValidateHole", "CutFakeHoles"]),
     ("validation: the rest (detail ratios of tied candidates, the other candidates)", ["ValidateHole"]),
     ("variations: the continuations of the hole", ["ContinuationCandidate::Variations"]),

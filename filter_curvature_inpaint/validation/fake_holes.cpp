@@ -43,6 +43,10 @@ double PointTriangleDistance2(const Eigen::Vector3d& p, const Eigen::Vector3d& a
 
 using Triangles = std::vector<std::array<Eigen::Vector3d, 3>>;
 
+} // namespace
+
+namespace detail {
+
 /// Triangles bucketed on a uniform grid of cells as large as the longest edge, for nearest
 /// queries from points close to them (a fill against the surface it replaces).
 class TriangleGrid {
@@ -111,17 +115,22 @@ private:
   std::unordered_map<uint64_t, std::vector<int>> cells_;
 };
 
+} // namespace detail
+
+namespace {
+
+using detail::TriangleGrid;
+
 /// RMS distance from the centres of `from` (at most `samples` of them, evenly strided) to the
-/// surface `to`.
-double RmsDistance(const Triangles& from, const Triangles& to, size_t samples = 400) {
+/// surface in `to`.
+double RmsDistance(const Triangles& from, TriangleGrid& to, size_t samples = 400) {
   if (from.empty()) return 0.0;
-  TriangleGrid grid(to);
   const size_t stride = std::max<size_t>(1, from.size() / samples);
   double sum = 0;
   size_t n = 0;
   for (size_t i = 0; i < from.size(); i += stride, ++n) {
     const auto& t = from[i];
-    sum += grid.Distance2((t[0] + t[1] + t[2]) / 3);
+    sum += to.Distance2((t[0] + t[1] + t[2]) / 3);
   }
   return std::sqrt(sum / double(n));
 }
@@ -329,15 +338,27 @@ std::vector<std::unique_ptr<FakeHole>> CutFakeHoles(const CMeshO& m, const vcg_e
   return fakes;
 }
 
-double FakeHoleError(const FakeHole& fake, const std::vector<Eigen::Vector3d>& points,
-                     const std::vector<std::array<int, 3>>& triangles) {
+FakeHoleScorer::FakeHoleScorer(const FakeHole& fake) : fake_(fake) {
+  if (!fake.cut.empty()) cut_ = std::make_unique<detail::TriangleGrid>(fake.cut);
+}
+
+FakeHoleScorer::~FakeHoleScorer() = default;
+
+double FakeHoleScorer::Error(const std::vector<Eigen::Vector3d>& points,
+                             const std::vector<std::array<int, 3>>& triangles) {
   // A fill that went off to infinity is the worst candidate (and would not fit a grid).
   for (const auto& p : points)
     if (!p.allFinite()) return std::numeric_limits<double>::infinity();
   Triangles fill;
   for (const auto& t : triangles) fill.push_back({points[t[0]], points[t[1]], points[t[2]]});
-  if (fill.empty() || fake.cut.empty()) return std::numeric_limits<double>::infinity();
-  return 0.5 * (RmsDistance(fill, fake.cut) + RmsDistance(fake.cut, fill));
+  if (fill.empty() || !cut_) return std::numeric_limits<double>::infinity();
+  TriangleGrid fill_grid(fill);
+  return 0.5 * (RmsDistance(fill, *cut_) + RmsDistance(fake_.cut, fill_grid));
+}
+
+double FakeHoleError(const FakeHole& fake, const std::vector<Eigen::Vector3d>& points,
+                     const std::vector<std::array<int, 3>>& triangles) {
+  return FakeHoleScorer(fake).Error(points, triangles);
 }
 
 } // namespace curvature_inpaint

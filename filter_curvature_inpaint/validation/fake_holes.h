@@ -61,9 +61,33 @@ std::vector<std::unique_ptr<FakeHole>> CutFakeHoles(const CMeshO& m, const vcg_e
                                                     int hole, const FakeHoleParams& params,
                                                     std::string* why);
 
-/// The hole-region RMS distance (both directions, from triangle centres) between a
-/// fill (`points`, with `triangles` the fill's) and the surface cut out, in the units of the
-/// points.
+namespace detail {
+class TriangleGrid;
+} // namespace detail
+
+/// Scores fills of one fake hole against the surface cut out. Every candidate is measured
+/// against the same cut surface, so its search grid is built once, not once per candidate.
+/// Not thread-safe (the grid marks what a query visits): one scorer per thread.
+class FakeHoleScorer {
+public:
+  /// \pre `fake` outlives the scorer.
+  explicit FakeHoleScorer(const FakeHole& fake);
+  ~FakeHoleScorer();
+  FakeHoleScorer(const FakeHoleScorer&) = delete;
+  FakeHoleScorer& operator=(const FakeHoleScorer&) = delete;
+
+  /// The hole-region RMS distance (both directions, from triangle centres) between a fill
+  /// (`points`, with `triangles` the fill's) and the surface cut out, in the units of the
+  /// points; infinite for a fill with a point off to infinity, or an empty one.
+  double Error(const std::vector<Eigen::Vector3d>& points,
+               const std::vector<std::array<int, 3>>& triangles);
+
+private:
+  const FakeHole& fake_;
+  std::unique_ptr<detail::TriangleGrid> cut_; ///< of fake_.cut; null where it is empty
+};
+
+/// FakeHoleScorer(fake).Error(points, triangles), for one fill.
 double FakeHoleError(const FakeHole& fake, const std::vector<Eigen::Vector3d>& points,
                      const std::vector<std::array<int, 3>>& triangles);
 

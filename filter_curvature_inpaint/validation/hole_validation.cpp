@@ -118,13 +118,13 @@ bool TryFakeHole(const FakeHole& fake, const std::vector<ValidationCandidate>& c
   PatchWork work = MakePatchWork(site, used);
   StopIfAsked(ctx);
   work.completions = InpaintEmbeddedAmplitudes(site.image, site.mask, one, vp.details);
+  FakeHoleScorer scorer(fake);
   for (const ValidationCandidate& c : candidates) {
     StopIfAsked(ctx);
     FakeHoleFill filled = c.fill->FillFakeHole(site, work, c.amplitude);
     t.applies.push_back(filled.applies);
     t.fills.push_back(filled.applies ? std::move(filled.points) : f.patch.points);
-    t.errors.push_back(filled.applies ? FakeHoleError(fake, t.fills.back(), fill) / fake.radius
-                                      : 0.0);
+    t.errors.push_back(filled.applies ? scorer.Error(t.fills.back(), fill) / fake.radius : 0.0);
   }
   return true;
 }
