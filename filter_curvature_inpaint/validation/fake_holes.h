@@ -78,7 +78,8 @@ public:
 
   /// The hole-region RMS distance (both directions, from triangle centres) between a fill
   /// (`points`, with `triangles` the fill's) and the surface cut out, in the units of the
-  /// points; infinite for a fill with a point off to infinity, or an empty one.
+  /// points; infinite for a fill with a point off to infinity, and where the fill or the
+  /// surface cut out is empty.
   double Error(const std::vector<Eigen::Vector3d>& points,
                const std::vector<std::array<int, 3>>& triangles);
 
