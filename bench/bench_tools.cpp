@@ -6,6 +6,11 @@
 //   bench_tools render MESH PNG CX CY CZ R [VX VY VZ [CURVATURE_SCALE]]
 //                                                   a view of the faces within R of C
 //   bench_tools side-by-side OUT PNG...             panels left to right
+//   bench_tools learned-planes IMAGE MASK CONTINUATION OUT [IMAGE...]
+//                                                   the learned inpainter's input planes,
+//                                                   then each further image's curvature, as
+//                                                   float32 planes of 128² (train/)
+#include "inpaint/learned_inpainter.h"
 #include "io/mesh_io.h"
 #include "pipeline/curvature_images.h"
 #include "pipeline/ground_truth_image.h"
@@ -478,6 +483,28 @@ int Render(const std::string& in, const std::string& png, const Point3m& center,
   return image.save(QString::fromStdString(png)) ? 0 : 1;
 }
 
+QImage LoadImage(const std::string& path) {
+  QImage image(QString::fromStdString(path));
+  if (image.isNull()) throw std::runtime_error("cannot read " + path);
+  return image;
+}
+
+int LearnedPlanes(const std::vector<std::string>& args) {
+  using namespace curvature_inpaint;
+  const QImage mask = LoadImage(args[1]);
+  const CurvatureReading image = ReadCurvatureImage(LoadImage(args[0]), mask);
+  Planes planes = LearnedInput(image, ReadCurvatureImage(LoadImage(args[2]), mask));
+  for (size_t i = 4; i < args.size(); ++i) {
+    const CurvatureReading extra = ReadCurvatureImage(LoadImage(args[i]), mask);
+    const std::vector<float> cells = ToLearnedSide(extra.t, extra.width, extra.height);
+    planes.data.insert(planes.data.end(), cells.begin(), cells.end());
+  }
+  FILE* f = std::fopen(args[3].c_str(), "wb");
+  if (!f) throw std::runtime_error("cannot write " + args[3]);
+  const size_t n = std::fwrite(planes.data.data(), sizeof(float), planes.data.size(), f);
+  return std::fclose(f) == 0 && n == planes.data.size() ? 0 : 1;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -488,6 +515,8 @@ int main(int argc, char** argv) {
     if (cmd == "kept" && argc == 4) return Kept(argv[2], argv[3]);
     if (cmd == "side-by-side" && argc >= 4)
       return SideBySide(argv[2], std::vector<std::string>(argv + 3, argv + argc));
+    if (cmd == "learned-planes" && argc >= 6)
+      return LearnedPlanes(std::vector<std::string>(argv + 2, argv + argc));
     if (cmd == "append" && argc == 5) return Append(argv[2], argv[3], argv[4]);
     if (cmd == "punch-many" && argc == 7)
       return PunchMany(argv[2], argv[3], std::stoi(argv[4]), std::stod(argv[5]),

@@ -318,31 +318,32 @@ private slots:
     QVERIFY2(hole.choice.problem.empty(), hole.choice.problem.c_str());
     QVERIFY2(hole.choice.priors.no_symmetry.empty(), hole.choice.priors.no_symmetry.c_str());
     // The egg is smooth all round: the crease prior offers its one face extended too.
-    QVERIFY(
-        hole.choice.kinds ==
-        (std::vector<FillKind>{FillKind::kContinuation, FillKind::kContinuation,
-                               FillKind::kExemplar, FillKind::kExemplar, FillKind::kTriLaplacian,
-                               FillKind::kSymmetry, FillKind::kSymmetrySurface, FillKind::kFace}));
+    QVERIFY(hole.choice.kinds ==
+            (std::vector<FillKind>{FillKind::kContinuation, FillKind::kContinuation,
+                                   FillKind::kExemplar, FillKind::kExemplar, FillKind::kLearned,
+                                   FillKind::kTriLaplacian, FillKind::kSymmetry,
+                                   FillKind::kSymmetrySurface, FillKind::kFace}));
     QVERIFY(hole.choice.kinds[size_t(hole.choice.pick - 1)] == FillKind::kContinuation);
     // Each item says its kind; the two continuations, identical at detail 0, are one item;
     // clicking the mirrored surface chooses it.
     auto* list = Find<QListWidget>(d, "variations_1");
     QCOMPARE(hole.variations[0], hole.variations[1]);
-    QCOMPARE(list->count(), 7);
+    QCOMPARE(list->count(), 8);
     QVERIFY2(list->item(0)->text().startsWith("1-2: continuation (auto)"),
              qPrintable(list->item(0)->text()));
     QVERIFY(list->item(1)->text().contains("exemplar"));
-    QVERIFY(list->item(3)->text().contains("tri-laplacian"));
-    QVERIFY(list->item(4)->text().contains("symmetry"));
-    QCOMPARE(list->item(5)->data(Qt::UserRole).toString(), QString("symmetry surface"));
-    for (int row : {4, 5})
+    QVERIFY(list->item(3)->text().contains("learned"));
+    QVERIFY(list->item(4)->text().contains("tri-laplacian"));
+    QVERIFY(list->item(5)->text().contains("symmetry"));
+    QCOMPARE(list->item(6)->data(Qt::UserRole).toString(), QString("symmetry surface"));
+    for (int row : {5, 6})
       QVERIFY2(list->item(row)->toolTip().contains("mirror image, which covers 100 % of the fill"),
                qPrintable(list->item(row)->toolTip()));
-    QVERIFY(list->item(3)->toolTip().isEmpty());
-    QVERIFY(list->item(6)->text().contains("face"));
+    QVERIFY(list->item(4)->toolTip().isEmpty());
+    QVERIFY(list->item(7)->text().contains("face"));
     QTest::mouseClick(list->viewport(), Qt::LeftButton, {},
-                      list->visualItemRect(list->item(5)).center());
-    QCOMPARE(d.Holes()[0].choice.pick, 7);
+                      list->visualItemRect(list->item(6)).center());
+    QCOMPARE(d.Holes()[0].choice.pick, 8);
     // Apply's input: the hole takes the mirrored surface, bump and all.
     CMeshO applied;
     curvature_inpaint::CopyMesh(egg, applied);
@@ -353,6 +354,8 @@ private slots:
     // Unchecked, the preview offers the continuations alone.
     Find<QCheckBox>(d, "symmetry")->setChecked(false);
     Find<QCheckBox>(d, "exemplar")->setChecked(false);
+    QVERIFY(Find<QCheckBox>(d, "learned")->isChecked());
+    Find<QCheckBox>(d, "learned")->setChecked(false);
     Find<QCheckBox>(d, "triLaplacian")->setChecked(false);
     Find<QCheckBox>(d, "creases")->setChecked(false);
     d.Inpaint();

@@ -4,6 +4,7 @@
 #include "candidates/continuation_candidate.h"
 #include "candidates/crease_candidate.h"
 #include "candidates/exemplar_candidate.h"
+#include "candidates/learned_candidate.h"
 #include "candidates/symmetry_candidates.h"
 #include "candidates/tri_laplacian_candidate.h"
 
@@ -13,12 +14,14 @@ const std::vector<const FillCandidate*>& FillCandidates() {
   static const CoarseCandidate coarse;
   static const ContinuationCandidate continuation;
   static const ExemplarCandidate exemplar;
+  static const LearnedCandidate learned;
   static const TriLaplacianCandidate tri_laplacian;
   static const SymmetryCandidate symmetry;
   static const SymmetrySurfaceCandidate symmetry_surface;
   static const CreaseCandidate creases;
-  static const std::vector<const FillCandidate*> all{
-      &coarse, &continuation, &exemplar, &tri_laplacian, &symmetry, &symmetry_surface, &creases};
+  static const std::vector<const FillCandidate*> all{&coarse,           &continuation,  &exemplar,
+                                                     &learned,          &tri_laplacian, &symmetry,
+                                                     &symmetry_surface, &creases};
   return all;
 }
 

@@ -7,8 +7,9 @@ namespace curvature_inpaint {
 namespace {
 
 /// By FillKind.
-constexpr const char* kNames[] = {"coarse",   "continuation",     "exemplar", "tri-laplacian",
-                                  "symmetry", "symmetry surface", "creases",  "face"};
+constexpr const char* kNames[] = {"coarse",           "continuation",  "exemplar",
+                                  "learned",          "tri-laplacian", "symmetry",
+                                  "symmetry surface", "creases",       "face"};
 constexpr size_t kKinds = sizeof kNames / sizeof *kNames;
 
 } // namespace

@@ -13,6 +13,7 @@ enum class FillKind {
   kCoarse,          ///< "coarse": the coarse fill as it is
   kContinuation,    ///< "continuation": the backend's completion of the curvature image
   kExemplar,        ///< "exemplar": patches of the known curvature copied in
+  kLearned,         ///< "learned": the continuation corrected by the network trained here
   kTriLaplacian,    ///< "tri-laplacian": the fill faired to continue the curvature around it
   kSymmetry,        ///< "symmetry": the curvature of the mirror image
   kSymmetrySurface, ///< "symmetry surface": the mirror image itself

@@ -79,12 +79,14 @@ const Options kFill = Join(
          {"--pick", "WHICH",
           "auto (default: the fill that did clearly best on test cuts near the hole, else the "
           "smooth fill), coarse (the smooth fill), a variation number, a kind (continuation, "
-          "exemplar, tri-laplacian, symmetry, symmetry surface, creases, face), or one entry "
+          "exemplar, learned, tri-laplacian, symmetry, symmetry surface, creases, face), or one "
+          "entry "
           "per hole: A,B,..."},
          FromSetting(Setting::kFakeHoles),
          {"--fake-hole-size", "PX", "the test cuts' images (default 128)"},
          FromSetting(Setting::kSymmetry),
          FromSetting(Setting::kExemplar),
+         FromSetting(Setting::kLearned),
          FromSetting(Setting::kCreases),
          FromSetting(Setting::kTriLaplacian),
          FromSetting(Setting::kMode),

@@ -257,6 +257,10 @@ void HoleFillDialog::AddChoiceRows(QFormLayout* form) {
   exemplar_->setObjectName("exemplar");
   Declare(exemplar_, Setting::kExemplar);
   form->addRow("E&xemplar", exemplar_);
+  learned_ = new QCheckBox("Offer the learned inpainter's fill");
+  learned_->setObjectName("learned");
+  Declare(learned_, Setting::kLearned);
+  form->addRow("Lear&ned", learned_);
   creases_ = new QCheckBox("Carry creases across holes");
   creases_->setObjectName("creases");
   Declare(creases_, Setting::kCreases);
@@ -388,6 +392,7 @@ HoleFillParams HoleFillDialog::Params() const {
   p.inpaint.detail = detail_->value();
   p.symmetry.enabled = symmetry_->isChecked();
   p.exemplar = exemplar_->isChecked();
+  p.learned = learned_->isChecked();
   p.creases = creases_->isChecked();
   p.tri_laplacian = tri_laplacian_->isChecked();
   p.paper.similitude = similitude_->value();
@@ -462,6 +467,7 @@ void HoleFillDialog::LoadSettings() {
   detail_->setValue(s.value("detail", d.inpaint.detail).toDouble());
   symmetry_->setChecked(s.value("symmetry", d.symmetry.enabled).toBool());
   exemplar_->setChecked(s.value("exemplar", d.exemplar).toBool());
+  learned_->setChecked(s.value("learned", d.learned).toBool());
   creases_->setChecked(s.value("creases", d.creases).toBool());
   tri_laplacian_->setChecked(s.value("triLaplacian", d.tri_laplacian).toBool());
   similitude_->setValue(s.value("similitude", d.paper.similitude).toDouble());
@@ -491,6 +497,7 @@ void HoleFillDialog::SaveSettings() const {
   s.setValue("detail", detail_->value());
   s.setValue("symmetry", symmetry_->isChecked());
   s.setValue("exemplar", exemplar_->isChecked());
+  s.setValue("learned", learned_->isChecked());
   s.setValue("creases", creases_->isChecked());
   s.setValue("triLaplacian", tri_laplacian_->isChecked());
   s.setValue("similitude", similitude_->value());

@@ -109,6 +109,7 @@ private:
   QDoubleSpinBox* detail_;
   QCheckBox* symmetry_;
   QCheckBox* exemplar_;
+  QCheckBox* learned_;
   QCheckBox* creases_;
   QCheckBox* tri_laplacian_;
   QDoubleSpinBox* similitude_;

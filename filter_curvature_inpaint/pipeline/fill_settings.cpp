@@ -66,6 +66,12 @@ const std::vector<SettingSpec>& AllSettings() {
      "Embedded backend: as many more variations copied from patches of the known curvature, "
      "ridges and valleys first (\"exemplar\"), used where the fake holes validate them.",
      "the exemplar variations", 0, 1},
+    {Setting::kLearned, SettingType::kBool, "Learned", "Offer the learned inpainter's fill",
+     "--no-learned", "", "never offer the learned inpainter's completion (embedded)",
+     "Embedded backend: one more variation (\"learned\"): the continuation of the curvature "
+     "corrected by a small network trained on curvature images of public meshes, used where the "
+     "fake holes validate it.",
+     "the learned inpainter", 0, 1},
     {Setting::kCreases, SettingType::kBool, "Creases", "Carry creases across holes",
      "--no-creases", "", "never extend sharp edges or flat faces across a hole",
      "A hole that sharp edges run into gets one more variation (\"creases\"): the smooth faces "
@@ -158,6 +164,8 @@ double SettingValue(Setting id, const HoleFillParams& p) {
     return p.symmetry.enabled;
   case Setting::kExemplar:
     return p.exemplar;
+  case Setting::kLearned:
+    return p.learned;
   case Setting::kCreases:
     return p.creases;
   case Setting::kTriLaplacian:
@@ -203,6 +211,9 @@ void SetSetting(Setting id, double value, HoleFillParams& p) {
     return;
   case Setting::kExemplar:
     p.exemplar = value != 0;
+    return;
+  case Setting::kLearned:
+    p.learned = value != 0;
     return;
   case Setting::kCreases:
     p.creases = value != 0;

@@ -23,6 +23,7 @@ enum class Setting {
   kDetail,
   kSymmetry,
   kExemplar,
+  kLearned,
   kCreases,
   kTriLaplacian,
   kMode,

@@ -93,6 +93,9 @@ struct HoleFillParams {
   /// Off by default: where the validation chose it, it filled further from the truth than the
   /// fill without it (docs/experiments.md, "The figures behind the defaults").
   bool exemplar = false;
+  /// Embedded backend: one more variation, the continuation corrected by the network trained on
+  /// public meshes ("learned", inpaint/learned_inpainter.h), validated like the rest.
+  bool learned = true;
   /// Each hole that creases of its context run into gets one more variation: the context's
   /// smooth faces extended across it until they meet ("creases", vcg_ext/crease_fill.h); a
   /// hole with no crease near it, inside one smooth face, that face extended ("face").

@@ -119,6 +119,7 @@ void RunHoleFillFromParams(MeshModel& mm, const ParamValues& v, const FilterEnvi
   p.inpaint.detail = v.Float("Detail");
   p.symmetry.enabled = v.Bool("Symmetry");
   p.exemplar = v.Bool("Exemplar");
+  p.learned = v.Bool("Learned");
   p.creases = v.Bool("Creases");
   p.tri_laplacian = v.Bool("TriLaplacian");
   ReadDeformationParams(v, p);

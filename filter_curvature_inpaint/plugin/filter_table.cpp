@@ -170,6 +170,7 @@ FilterSpec HoleFill() {
   p.push_back(FromSetting(Setting::kDetail));
   p.push_back(FromSetting(Setting::kSymmetry));
   p.push_back(FromSetting(Setting::kExemplar));
+  p.push_back(FromSetting(Setting::kLearned));
   p.push_back(FromSetting(Setting::kCreases));
   p.push_back(FromSetting(Setting::kTriLaplacian));
   AddPaperModeParams(p);

@@ -35,6 +35,8 @@ std::string KindInWords(FillKind kind) {
     return "the inpainted curvature";
   case FillKind::kExemplar:
     return "patches of the scan's own curvature";
+  case FillKind::kLearned:
+    return "the curvature as the learned inpainter completes it";
   case FillKind::kTriLaplacian:
     return "the surrounding curvature continued";
   case FillKind::kSymmetry:
