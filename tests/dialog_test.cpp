@@ -311,6 +311,8 @@ private slots:
     QVERIFY(Find<QCheckBox>(d, "symmetry")->isChecked());
     QVERIFY(!Find<QCheckBox>(d, "exemplar")->isChecked()); // on request only
     Find<QCheckBox>(d, "exemplar")->setChecked(true);
+    QVERIFY(!Find<QCheckBox>(d, "learned")->isChecked()); // on request only
+    Find<QCheckBox>(d, "learned")->setChecked(true);
     d.Inpaint();
     QTRY_VERIFY_WITH_TIMEOUT(!d.Busy(), 120000);
     QCOMPARE(int(d.Holes().size()), 1);

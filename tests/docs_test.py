@@ -16,6 +16,8 @@ PAGES = ["README.md"] + sorted(os.path.join("docs", n) for n in os.listdir(os.pa
 SKIPPED = {
     "bash scripts/run-tests.sh": "it is the test run itself",
     "python3 bench/": "benchmarks take from minutes to an hour; their figures are in docs/benchmark.md",
+    "/usr/bin/python3 train/": "making pairs and training take most of an hour and python3-torch; "
+                               "tests/learned_inpainter_test.cpp checks the network they made",
     "sbatch ": "needs a Slurm cluster; tests/slurm_test.py runs the script on a real one-node Slurm",
     "sudo cp ": "changes the machine's MeshLab; tests/plugin_test.py loads the plugin from a prefix",
     "P=$HOME/meshlab-ci": "starts the MeshLab GUI; tests/gui_test.py does, under Xvfb",

@@ -110,16 +110,18 @@ class MeshlabServer(TempDirTest):
         self.assertEqual(coarse[:n], filled["0"][:n])
         self.assertNotEqual(coarse[n:], filled["2"][n:])
 
-    def test_symmetry_exemplar_and_tri_laplacian_parameters_reach_the_pipeline(self):
+    def test_symmetry_exemplar_learned_and_tri_laplacian_parameters_reach_the_pipeline(self):
         # Igea is mirror-symmetric: the shipped script finds its plane and validates the
-        # tri-Laplacian and the symmetry candidates (the hole's mirror image is scan), not the
-        # exemplar (off by default); with the three parameters swapped, the exemplar alone.
+        # tri-Laplacian and symmetry candidates (the hole's mirror image is scan), not the
+        # exemplar and the learned one (off by default); with the four parameters swapped, the
+        # exemplar and the learned one alone.
         src = self.punched("igea_190k.ply", 61000, 0.03)
         with open(os.path.join(SCRIPTS, "curvature_inpaint_hole_fill.mlx")) as f:
             shipped = f.read()
         self.assertIn('name="Symmetry" value="true"', shipped)
         self.assertIn('name="Exemplar" value="false"', shipped)
         self.assertIn('name="TriLaplacian" value="true"', shipped)
+        self.assertIn('name="Learned" value="false"', shipped)
         r = self.meshlabserver(src, self.path("shipped.ply"),
                                os.path.join(SCRIPTS, "curvature_inpaint_hole_fill.mlx"))
         log = r.stdout + r.stderr
@@ -128,18 +130,21 @@ class MeshlabServer(TempDirTest):
         self.assertRegex(log, r"validation 1: .*detail 2 [\d.]+, tri-laplacian [\d.]+, symmetry "
                               r"[\d.]+, symmetry surface")
         self.assertNotIn("exemplar", log)
+        self.assertNotIn("learned", log)
         script = self.path("swapped.mlx")
         with open(script, "w") as f:
             f.write(shipped.replace('name="Symmetry" value="true"', 'name="Symmetry" value="false"')
                     .replace('name="Exemplar" value="false"', 'name="Exemplar" value="true"')
-                    .replace('name="TriLaplacian" value="true"', 'name="TriLaplacian" value="false"'))
+                    .replace('name="TriLaplacian" value="true"', 'name="TriLaplacian" value="false"')
+                    .replace('name="Learned" value="false"', 'name="Learned" value="true"'))
         r = self.meshlabserver(src, self.path("swapped.ply"), script)
         log = r.stdout + r.stderr
         self.assertEqual(r.returncode, 0, log)
         self.assertNotIn("symmetry", log)
         self.assertNotIn("tri-laplacian", log)
         # (The crease prior, on by default, may add the one smooth face around it extended.)
-        self.assertRegex(log, r"validation 1: .*detail 2 [\d.]+, exemplar [\d.]+(, face [\d.]+)?; "
+        self.assertRegex(log, r"validation 1: .*detail 2 [\d.]+, exemplar [\d.]+, learned [\d.]+"
+                              r"(, face [\d.]+)?; "
                               r"chose")
         self.assertEqual(info(self.path("swapped.ply"))["holes"], 0)
 

@@ -41,18 +41,21 @@ def main():
     order = np.argsort(change)
     picks = order[np.linspace(0, len(order) - 1, 10).round().astype(int)]
     cell, pad, top = 128, 4, 18
-    sheet = Image.new("RGB", (4 * (cell + pad) + pad, top + 10 * (cell + pad)), (40, 40, 46))
+    sheet = Image.new("RGB", (4 * (cell + pad) + pad + 150, top + 10 * (cell + pad)), (40, 40, 46))
     draw = ImageDraw.Draw(sheet)
     for c, name in enumerate(["input", "truth", "continuation", "learned"]):
         draw.text((pad + c * (cell + pad) + 4, 3), name, fill=(230, 230, 230))
     for r, k in enumerate(picks):
         shown = colour(val[k, 0])
         shown[hole[k]] = 128
-        panels = [shown, colour(val[k, 3]), colour(val[k, 2]), colour(learned[k])]
+        # As the product pastes it: the network's curvature on the hole, the known pixels kept.
+        pasted = np.where(hole[k], learned[k], val[k, 0])
+        panels = [shown, colour(val[k, 3]), colour(val[k, 2]), colour(pasted)]
         for c, p in enumerate(panels):
             sheet.paste(Image.fromarray(p), (pad + c * (cell + pad), top + r * (cell + pad)))
-        label = "%s  %.2fx" % (os.path.basename(files[k])[:-4], change[k])
-        draw.text((pad + 3 * (cell + pad) + 3, top + r * (cell + pad) + 3), label, fill=(0, 0, 0))
+        label = "%s\nerror %.2fx the\ncontinuation's" % (os.path.basename(files[k])[:-4], change[k])
+        draw.text((pad + 4 * (cell + pad) + 4, top + r * (cell + pad) + 4), label,
+                  fill=(230, 230, 230))
     sheet.save(a.out)
     print("wrote", a.out)
 

@@ -260,7 +260,7 @@ curvature_inpaint::HoleFillParams ReadFillOptions(Args& args) {
   p.direct.apss_passes = int(args.Integer("--curvature-passes", p.direct.apss_passes, 0));
   p.symmetry.enabled = !args.Flag("--no-symmetry");
   p.exemplar = args.Flag("--exemplar");
-  p.learned = !args.Flag("--no-learned");
+  p.learned = args.Flag("--learned");
   p.creases = !args.Flag("--no-creases");
   p.tri_laplacian = !args.Flag("--no-tri-laplacian");
   ReadPick(args.Text("--pick", "auto"), p);

@@ -67,7 +67,7 @@ const std::vector<SettingSpec>& AllSettings() {
      "ridges and valleys first (\"exemplar\"), used where the fake holes validate them.",
      "the exemplar variations", 0, 1},
     {Setting::kLearned, SettingType::kBool, "Learned", "Offer the learned inpainter's fill",
-     "--no-learned", "", "never offer the learned inpainter's completion (embedded)",
+     "--learned", "", "also offer the learned inpainter's completion (embedded)",
      "Embedded backend: one more variation (\"learned\"): the continuation of the curvature "
      "corrected by a small network trained on curvature images of public meshes, used where the "
      "fake holes validate it.",

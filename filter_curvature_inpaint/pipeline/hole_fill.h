@@ -94,8 +94,10 @@ struct HoleFillParams {
   /// fill without it (docs/experiments.md, "The figures behind the defaults").
   bool exemplar = false;
   /// Embedded backend: one more variation, the continuation corrected by the network trained on
-  /// public meshes ("learned", inpaint/learned_inpainter.h), validated like the rest.
-  bool learned = true;
+  /// public meshes ("learned", inpaint/learned_inpainter.h), validated like the rest. Off by
+  /// default: offered to the validation, it left the fills of the corpus's check part a little
+  /// farther from the truth (docs/experiments.md, "The learned inpainter as a candidate").
+  bool learned = false;
   /// Each hole that creases of its context run into gets one more variation: the context's
   /// smooth faces extended across it until they meet ("creases", vcg_ext/crease_fill.h); a
   /// hole with no crease near it, inside one smooth face, that face extended ("face").
